@@ -1,0 +1,62 @@
+// Labels written by the stages of Edge-Sharpener. Algorithm state lives in
+// these enums (in scoped vcglib attributes), never in colours: colouring is a
+// separate, final, optional step (colorize.h).
+#pragma once
+
+#include <cstdint>
+
+namespace edge_sharpener {
+
+/// Per face-edge label (kept equal on both sides of a shared edge).
+enum class EdgeLabel : std::uint8_t {
+  Gray,     ///< none of the below
+  Smooth,   ///< "brown": dihedral normal angle below the threshold
+  Red,      ///< bounds or lies inside a smooth region (filter 4)
+  Chamfer,  ///< "blue": non-red edge joining two red vertices (filter 5)
+};
+
+/// Per face label.
+enum class FaceLabel : std::uint8_t {
+  Gray,     ///< neither smooth-region, chamfer nor corner
+  Red,      ///< part of a smooth region (filters 2 and 3)
+  Chamfer,  ///< has one or two chamfer edges (split into 2 or 3 faces)
+  Corner,   ///< "green": three chamfer edges (filter 6, split into a fan of 6)
+};
+
+/// Per vertex label.
+enum class VertexLabel : std::uint8_t {
+  Gray,
+  Red,  ///< interior (filter 1) or boundary (filter 4) vertex of a smooth region
+};
+
+/// Where an inserted vertex ended up, and why (the fallback reasons are the
+/// paper's degenerate cases, each counted in the report).
+enum class Placement : std::uint8_t {
+  Original,         ///< not an inserted vertex: never moved
+  Moved,            ///< moved onto the plane intersection
+  ParallelPlanes,   ///< chamfer edge: the two planes are (nearly) parallel
+  CoplanarNormals,  ///< corner: the three plane normals are (nearly) coplanar
+  NoSupportPlane,   ///< an endpoint's red-triangle normal sum vanishes
+  EdgeTooLong,      ///< moving would create an edge longer than the input's longest
+  MixedConvexity,   ///< chamfer bordered by a concave and a convex side
+  DegenerateRevert, ///< moved back by the degenerate-triangle cleanup
+};
+constexpr int kPlacementCount = 8;
+
+const char *toString(Placement p);
+
+inline const char *toString(Placement p) {
+  switch (p) {
+    case Placement::Original: return "original";
+    case Placement::Moved: return "moved";
+    case Placement::ParallelPlanes: return "parallel_planes";
+    case Placement::CoplanarNormals: return "coplanar_normals";
+    case Placement::NoSupportPlane: return "no_support_plane";
+    case Placement::EdgeTooLong: return "edge_too_long";
+    case Placement::MixedConvexity: return "mixed_convexity";
+    case Placement::DegenerateRevert: return "degenerate_revert";
+  }
+  return "unknown";
+}
+
+}  // namespace edge_sharpener

@@ -1,0 +1,47 @@
+// Parameters of Edge-Sharpener (Attene, Falcidieno, Rossignac, Spagnuolo 2003).
+#pragma once
+
+#include <cmath>
+
+#include <wrap/callback.h>
+
+namespace edge_sharpener {
+
+/// Which placement/detection method runs.
+enum class Method {
+  Paper,  ///< the 2003 filter approach, exactly as published (section 3)
+};
+
+/// Options of sharpen() and detectChamfers(). Angles are in radians.
+struct SharpenOptions {
+  /// An edge is smooth when the angle between its two face normals is below
+  /// `smoothMultiplier` x the mesh-wide mean of that angle. Paper: 2.
+  double smoothMultiplier = 2.0;
+
+  /// Reject a placement that would create an edge longer than the longest
+  /// edge of the input (paper, Figure 7). Off only for experiments.
+  bool edgeLengthCheck = true;
+
+  /// Keep a new vertex unmoved when its chamfer is bordered by a concave edge
+  /// on one side and a convex edge on the other (paper, section 3).
+  bool convexityCheck = true;
+
+  /// Two planes whose normals are closer than this angle count as parallel;
+  /// three normals whose triple product is below sin(this) count as coplanar.
+  double parallelAngleRad = 1.0 * M_PI / 180.0;
+
+  /// Triangles with an angle below this are degenerate and removed after
+  /// sharpening (paper: 1 degree).
+  double degenerateAngleRad = 1.0 * M_PI / 180.0;
+
+  /// Paint the paper's palette into face/vertex colours (needs per-face and
+  /// per-vertex colour on the mesh).
+  bool colorize = false;
+
+  Method method = Method::Paper;
+
+  /// Optional progress callback (percent, stage name); may be null.
+  vcg::CallBackPos *progress = nullptr;
+};
+
+}  // namespace edge_sharpener

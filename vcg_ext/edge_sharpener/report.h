@@ -1,0 +1,114 @@
+// What each stage of Edge-Sharpener did: one struct, filled stage by stage,
+// printed by the CLI (text or JSON) and logged by the MeshLab filter.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <sstream>
+#include <string>
+
+#include "labels.h"
+
+namespace edge_sharpener {
+
+/// Stage 1: smooth-edge test.
+struct SmoothEdgeStats {
+  std::size_t edges = 0;           ///< undirected edges
+  std::size_t boundaryEdges = 0;   ///< edges with one incident face (never smooth)
+  std::size_t degenerateEdges = 0; ///< interior edges next to a zero-area face (never smooth)
+  std::size_t smoothEdges = 0;     ///< "brown" edges
+  double meanAngleRad = 0;         ///< mean normal angle over interior edges
+  double thresholdRad = 0;         ///< multiplier x meanAngleRad
+};
+
+/// Stage 2: the six filters of the paper.
+struct FilterStats {
+  std::size_t interiorRedVertices = 0; ///< filter 1
+  std::size_t coreRedFaces = 0;        ///< filter 2
+  std::size_t redFaces = 0;            ///< after filter 3 (recursive growth)
+  std::size_t redVertices = 0;         ///< after filter 4
+  std::size_t redEdges = 0;            ///< filter 4
+  std::size_t chamferEdges = 0;        ///< filter 5 ("blue")
+  std::size_t cornerFaces = 0;         ///< filter 6 ("green")
+  std::size_t chamferFaces = 0;        ///< faces with one or two chamfer edges
+};
+
+/// Stage 3+4: split plan and subdivision.
+struct SubdivisionStats {
+  std::size_t facesSplitIn2 = 0;   ///< one chamfer edge
+  std::size_t facesSplitIn3 = 0;   ///< two chamfer edges
+  std::size_t facesSplitIn6 = 0;   ///< corner triangles (fan)
+  std::size_t insertedVertices = 0;
+  std::size_t addedFaces = 0;
+};
+
+/// Stage 5: placement of the inserted vertices; counts by outcome.
+struct PlacementStats {
+  std::array<std::size_t, kPlacementCount> byOutcome{};  ///< indexed by Placement
+  double maxDisplacement = 0;  ///< largest distance an inserted vertex moved
+  std::size_t count(Placement p) const { return byOutcome[static_cast<int>(p)]; }
+  std::size_t moved() const { return count(Placement::Moved); }
+  std::size_t fallbacks() const {
+    std::size_t n = 0;
+    for (int i = 0; i < kPlacementCount; ++i)
+      if (i != int(Placement::Moved) && i != int(Placement::Original)) n += byOutcome[i];
+    return n;
+  }
+};
+
+/// Stage 6: removal of degenerate triangles (angle below the threshold).
+struct CleanupStats {
+  std::size_t degenerateFound = 0;  ///< new faces below the angle threshold before cleanup
+  std::size_t collapses = 0;        ///< edges collapsed between coinciding new vertices
+  std::size_t flips = 0;            ///< edges flipped inside split faces
+  std::size_t reverted = 0;         ///< inserted vertices moved back (counted in placement too)
+  std::size_t remaining = 0;        ///< new faces still below the threshold afterwards
+};
+
+struct SharpenReport {
+  std::size_t inputVertices = 0, inputFaces = 0;
+  std::size_t outputVertices = 0, outputFaces = 0;
+  double longestInputEdge = 0;
+  SmoothEdgeStats smooth;
+  FilterStats filters;
+  SubdivisionStats subdivision;
+  PlacementStats placement;
+  CleanupStats cleanup;
+  bool geometryChanged = false;  ///< false for detection-only runs
+};
+
+/// Multi-line human-readable summary (the CLI's default output, the MeshLab log).
+inline std::string formatReport(const SharpenReport &r) {
+  std::ostringstream s;
+  constexpr double kDeg = 180.0 / 3.14159265358979323846;
+  s << "input: " << r.inputVertices << " vertices, " << r.inputFaces << " faces, longest edge "
+    << r.longestInputEdge << "\n";
+  s << "smooth edges: " << r.smooth.smoothEdges << " of " << r.smooth.edges << " (mean normal angle "
+    << r.smooth.meanAngleRad * kDeg << " deg, threshold " << r.smooth.thresholdRad * kDeg
+    << " deg; boundary " << r.smooth.boundaryEdges << ", next to degenerate faces "
+    << r.smooth.degenerateEdges << ")\n";
+  s << "filters: interior red vertices " << r.filters.interiorRedVertices << ", core red faces "
+    << r.filters.coreRedFaces << ", red faces " << r.filters.redFaces << ", red vertices "
+    << r.filters.redVertices << ", chamfer edges " << r.filters.chamferEdges << ", chamfer faces "
+    << r.filters.chamferFaces << ", corner faces " << r.filters.cornerFaces << "\n";
+  if (!r.geometryChanged) return s.str();
+  s << "subdivision: " << r.subdivision.facesSplitIn2 << " faces split in 2, "
+    << r.subdivision.facesSplitIn3 << " in 3, " << r.subdivision.facesSplitIn6 << " in 6; "
+    << r.subdivision.insertedVertices << " vertices and " << r.subdivision.addedFaces
+    << " faces added\n";
+  s << "placement: " << r.placement.moved() << " moved (max displacement "
+    << r.placement.maxDisplacement << "), " << r.placement.fallbacks() << " kept by fallback";
+  for (int i = 0; i < kPlacementCount; ++i) {
+    auto p = static_cast<Placement>(i);
+    if (p == Placement::Original || p == Placement::Moved || r.placement.byOutcome[i] == 0) continue;
+    s << "; " << toString(p) << " " << r.placement.byOutcome[i];
+  }
+  s << "\n";
+  s << "cleanup: " << r.cleanup.degenerateFound << " degenerate faces found, "
+    << r.cleanup.collapses << " collapses, " << r.cleanup.flips << " flips, "
+    << r.cleanup.reverted << " vertices reverted, " << r.cleanup.remaining << " remaining\n";
+  s << "output: " << r.outputVertices << " vertices, " << r.outputFaces << " faces\n";
+  return s.str();
+}
+
+}  // namespace edge_sharpener
