@@ -1,0 +1,48 @@
+// JSON form of SharpenReport, for the CLI's --json output and the benchmarks.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "edge_sharpener/report.h"
+
+namespace edge_sharpener {
+
+inline nlohmann::json reportToJson(const SharpenReport &r) {
+  nlohmann::json placement = {{"moved", r.placement.moved()},
+                              {"fallbacks", r.placement.fallbacks()},
+                              {"max_displacement", r.placement.maxDisplacement}};
+  for (int i = 0; i < kPlacementCount; ++i) {
+    const auto p = static_cast<Placement>(i);
+    if (p != Placement::Original && p != Placement::Moved)
+      placement["fallback_" + std::string(toString(p))] = r.placement.byOutcome[i];
+  }
+  return {
+      {"input", {{"vertices", r.inputVertices}, {"faces", r.inputFaces},
+                 {"longest_edge", r.longestInputEdge}}},
+      {"output", {{"vertices", r.outputVertices}, {"faces", r.outputFaces}}},
+      {"geometry_changed", r.geometryChanged},
+      {"smooth_edges",
+       {{"edges", r.smooth.edges}, {"boundary", r.smooth.boundaryEdges},
+        {"next_to_degenerate", r.smooth.degenerateEdges}, {"smooth", r.smooth.smoothEdges},
+        {"mean_angle_rad", r.smooth.meanAngleRad}, {"threshold_rad", r.smooth.thresholdRad}}},
+      {"filters",
+       {{"interior_red_vertices", r.filters.interiorRedVertices},
+        {"core_red_faces", r.filters.coreRedFaces}, {"red_faces", r.filters.redFaces},
+        {"red_vertices", r.filters.redVertices}, {"red_edges", r.filters.redEdges},
+        {"chamfer_edges", r.filters.chamferEdges}, {"chamfer_faces", r.filters.chamferFaces},
+        {"corner_faces", r.filters.cornerFaces}}},
+      {"subdivision",
+       {{"faces_split_in_2", r.subdivision.facesSplitIn2},
+        {"faces_split_in_3", r.subdivision.facesSplitIn3},
+        {"faces_split_in_6", r.subdivision.facesSplitIn6},
+        {"inserted_vertices", r.subdivision.insertedVertices},
+        {"added_faces", r.subdivision.addedFaces}}},
+      {"placement", placement},
+      {"cleanup",
+       {{"degenerate_found", r.cleanup.degenerateFound}, {"collapses", r.cleanup.collapses},
+        {"flips", r.cleanup.flips}, {"reverted", r.cleanup.reverted},
+        {"remaining", r.cleanup.remaining}}},
+  };
+}
+
+}  // namespace edge_sharpener

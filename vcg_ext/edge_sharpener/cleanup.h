@@ -1,0 +1,192 @@
+// Stage 6: removal of the degenerate triangles that sharpening can create,
+// e.g. where more than three sharp edges meet and several inserted vertices
+// move to the same corner (paper, Figure 8; Botsch & Kobbelt, VMV 2001).
+// Only faces produced by the subdivision are touched; original vertices never
+// move and faces of smooth regions are never changed.
+#pragma once
+
+#include <vector>
+
+#include <vcg/complex/complex.h>
+#include <vcg/simplex/face/pos.h>
+#include <vcg/simplex/face/topology.h>
+
+#include "subdivision.h"
+
+namespace edge_sharpener {
+
+namespace detail {
+
+inline bool isSplitChild(FaceLabel label) {
+  return label == FaceLabel::Chamfer || label == FaceLabel::Corner;
+}
+
+template <class FaceType>
+double faceMinAngle(const FaceType &f) {
+  return minTriangleAngle(positionOf(f.cV(0)), positionOf(f.cV(1)), positionOf(f.cV(2)));
+}
+
+inline Vec3 triangleNormal(const Vec3 &a, const Vec3 &b, const Vec3 &c) { return (b - a) ^ (c - a); }
+
+template <class FaceType>
+int longestEdgeIndex(const FaceType &f) {
+  int best = 0;
+  double bestLen = -1;
+  for (int i = 0; i < 3; ++i) {
+    const double len = (positionOf(f.cV(i)) - positionOf(f.cV((i + 1) % 3))).SquaredNorm();
+    if (len > bestLen) bestLen = len, best = i;
+  }
+  return best;
+}
+
+template <class FaceType>
+int shortestEdgeIndex(const FaceType &f) {
+  int best = 0;
+  double bestLen = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    const double len = (positionOf(f.cV(i)) - positionOf(f.cV((i + 1) % 3))).SquaredNorm();
+    if (len < bestLen) bestLen = len, best = i;
+  }
+  return best;
+}
+
+}  // namespace detail
+
+/// Collapses the shortest edge of a needle (a triangle whose shortest edge is
+/// tiny next to its longest) when an endpoint is an inserted vertex: the
+/// inserted vertex is removed and merged into the other endpoint, which keeps
+/// its position. Refused when it would break manifoldness (link condition) or
+/// flip a surrounding face. \return true if collapsed.
+template <class MeshType>
+bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan &plan,
+                    double angleRad) {
+  using FaceType = typename MeshType::FaceType;
+  using Pos = vcg::face::Pos<FaceType>;
+  const int z = detail::shortestEdgeIndex(f);
+  const double shortLen = (positionOf(f.cV(z)) - positionOf(f.cV((z + 1) % 3))).Norm();
+  const int zl = detail::longestEdgeIndex(f);
+  const double longLen = (positionOf(f.cV(zl)) - positionOf(f.cV((zl + 1) % 3))).Norm();
+  if (shortLen > 2 * std::sin(angleRad) * longLen) return false;  // a cap, not a needle
+
+  const std::size_t ia = vcg::tri::Index(m, f.cV(z)), ib = vcg::tri::Index(m, f.cV((z + 1) % 3));
+  const bool insA = ia >= plan.originalVertexCount, insB = ib >= plan.originalVertexCount;
+  if (!insA && !insB) return false;
+  // FFEdgeCollapse removes V0 of the edge: pick the side where that is the
+  // inserted vertex (the higher index when both are inserted).
+  const bool removeA = insA && (!insB || ia > ib);
+  FaceType *cf = &f;
+  int cz = z;
+  if (!removeA) {
+    cf = f.FFp(z);
+    cz = f.FFi(z);
+    if (cf == &f) return false;
+  }
+  if (!vcg::face::FFLinkCondition(*cf, cz)) return false;
+
+  auto *gone = cf->V0(cz);
+  auto *kept = cf->V1(cz);
+  std::vector<Pos> star;
+  vcg::face::VFOrderedStarFF(Pos(cf, cz, gone), star);
+  for (const Pos &p : star) {
+    const FaceType *g = p.F();
+    if (g->cV(0) == kept || g->cV(1) == kept || g->cV(2) == kept) continue;  // removed with the edge
+    Vec3 q[3], r[3];
+    for (int j = 0; j < 3; ++j) {
+      q[j] = positionOf(g->cV(j));
+      r[j] = g->cV(j) == gone ? positionOf(kept) : q[j];
+    }
+    const Vec3 before = detail::triangleNormal(q[0], q[1], q[2]);
+    const Vec3 after = detail::triangleNormal(r[0], r[1], r[2]);
+    if (!(before * after > 0)) return false;
+  }
+  vcg::face::FFEdgeCollapse(m, *cf, cz);
+  return true;
+}
+
+/// Flips the longest edge of a cap (a triangle with an angle near 180
+/// degrees) when the face across it also comes from a split face and the flip
+/// raises the smaller minimum angle of the pair without folding it.
+/// \return true if flipped.
+template <class MeshType>
+bool flipCap(typename MeshType::FaceType &f, MeshLabels<MeshType> &labels) {
+  using FaceType = typename MeshType::FaceType;
+  using Pos = vcg::face::Pos<FaceType>;
+  const int z = detail::longestEdgeIndex(f);
+  FaceType *g = f.FFp(z);
+  if (g == &f || !detail::isSplitChild(labels.face[g])) return false;
+  const int w = f.FFi(z);
+  auto *p = f.V0(z), *q = f.V1(z), *r = f.V2(z), *s = g->V2(w);
+  if (r == s || g->V(w) != q || g->V1(w) != p) return false;
+  std::vector<typename FaceType::VertexType *> ring;
+  vcg::face::VVOrderedStarFF(Pos(&f, (z + 2) % 3, r), ring);
+  for (auto *v : ring)
+    if (v == s) return false;  // the new edge exists already
+
+  const Vec3 P = positionOf(p), Q = positionOf(q), R = positionOf(r), S = positionOf(s);
+  const double before = std::min(minTriangleAngle(P, Q, R), minTriangleAngle(Q, P, S));
+  const double after = std::min(minTriangleAngle(P, S, R), minTriangleAngle(S, Q, R));
+  if (!(after > before)) return false;
+  const Vec3 reference = detail::triangleNormal(P, Q, R) + detail::triangleNormal(Q, P, S);
+  const Vec3 n1 = detail::triangleNormal(P, S, R), n2 = detail::triangleNormal(S, Q, R);
+  if (!(n1 * reference > 0 && n2 * reference > 0 && n1 * n2 > 0)) return false;
+  vcg::face::FlipEdge(f, z);
+  return true;
+}
+
+/// Moves the moved inserted vertices of `f` back to rest.
+/// \return how many were moved back.
+template <class MeshType>
+std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
+                                   const SplitPlan &plan, MeshLabels<MeshType> &labels) {
+  using Scalar = typename MeshType::ScalarType;
+  std::size_t n = 0;
+  for (int j = 0; j < 3; ++j) {
+    auto *v = f.V(j);
+    if (labels.placement[v] != Placement::Moved) continue;
+    const std::size_t k = vcg::tri::Index(m, v) - plan.originalVertexCount;
+    v->P() = vcg::Point3<Scalar>::Construct(plan.inserted[k].rest);
+    labels.placement[v] = Placement::DegenerateRevert;
+    ++n;
+  }
+  return n;
+}
+
+/// Stage 6: removes faces with an angle below `angleRad` among the faces made
+/// by subdivide(): needles by collapse, caps by flip, and otherwise by
+/// sending the face's moved vertices back to rest. Deleted elements are left
+/// flagged (compact afterwards).
+/// \pre placeInsertedVertices() ran; FF topology up to date.
+template <class MeshType>
+CleanupStats removeDegenerateTriangles(MeshType &m, const SplitPlan &plan,
+                                       MeshLabels<MeshType> &labels, double angleRad) {
+  CleanupStats s;
+  const auto degenerate = [&](const typename MeshType::FaceType &f) {
+    return !f.IsD() && detail::isSplitChild(labels.face[&f]) && detail::faceMinAngle(f) < angleRad;
+  };
+  for (const auto &f : m.face) s.degenerateFound += degenerate(f);
+  if (s.degenerateFound == 0) return s;
+
+  constexpr int kMaxPasses = 16;
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    bool changed = false;
+    for (std::size_t i = 0; i < m.face.size(); ++i) {
+      auto &f = m.face[i];
+      if (!degenerate(f)) continue;
+      if (collapseNeedle(m, f, plan, angleRad)) {
+        ++s.collapses;
+      } else if (flipCap(f, labels)) {
+        ++s.flips;
+      } else if (std::size_t n = revertInsertedVertices(m, f, plan, labels)) {
+        s.reverted += n;
+      } else {
+        continue;
+      }
+      changed = true;
+    }
+    if (!changed) break;
+  }
+  for (const auto &f : m.face) s.remaining += degenerate(f);
+  return s;
+}
+
+}  // namespace edge_sharpener

@@ -1,0 +1,72 @@
+// Optional final step: paints the labels with the paper's palette so a user
+// can inspect what was detected and what happened to each inserted vertex.
+// Faces: smooth region red, chamfer (and its children) blue, corner green,
+// others grey. Vertices: red-region vertices red, others grey; inserted
+// vertices by outcome (see placementColor()).
+#pragma once
+
+#include <vcg/space/color4.h>
+
+#include "mesh_labels.h"
+
+namespace edge_sharpener {
+
+inline vcg::Color4b faceLabelColor(FaceLabel label) {
+  switch (label) {
+    case FaceLabel::Red: return vcg::Color4b(220, 50, 40, 255);
+    case FaceLabel::Chamfer: return vcg::Color4b(40, 90, 230, 255);
+    case FaceLabel::Corner: return vcg::Color4b(30, 190, 60, 255);
+    case FaceLabel::Gray: break;
+  }
+  return vcg::Color4b(160, 160, 160, 255);
+}
+
+/// Moved: yellow; kept at rest: parallel planes magenta, coplanar normals
+/// cyan, no support plane black, edge too long orange, mixed convexity
+/// purple, reverted by cleanup white.
+inline vcg::Color4b placementColor(Placement p, VertexLabel label) {
+  switch (p) {
+    case Placement::Original:
+      return label == VertexLabel::Red ? vcg::Color4b(220, 50, 40, 255)
+                                       : vcg::Color4b(160, 160, 160, 255);
+    case Placement::Moved: return vcg::Color4b(255, 220, 0, 255);
+    case Placement::ParallelPlanes: return vcg::Color4b(230, 0, 230, 255);
+    case Placement::CoplanarNormals: return vcg::Color4b(0, 220, 230, 255);
+    case Placement::NoSupportPlane: return vcg::Color4b(0, 0, 0, 255);
+    case Placement::EdgeTooLong: return vcg::Color4b(255, 140, 0, 255);
+    case Placement::MixedConvexity: return vcg::Color4b(120, 40, 160, 255);
+    case Placement::DegenerateRevert: return vcg::Color4b(255, 255, 255, 255);
+  }
+  return vcg::Color4b(160, 160, 160, 255);
+}
+
+/// Paints face colours (if the mesh has them) and vertex colours (likewise).
+template <class MeshType>
+void colorize(MeshType &m, MeshLabels<MeshType> &labels) {
+  if (vcg::tri::HasPerFaceColor(m))
+    for (auto &f : m.face)
+      if (!f.IsD()) f.C() = faceLabelColor(labels.face[&f]);
+  if (vcg::tri::HasPerVertexColor(m))
+    for (auto &v : m.vert)
+      if (!v.IsD()) v.C() = placementColor(labels.placement[&v], labels.vertex[&v]);
+}
+
+/// Selects the chamfer and corner faces (and their children) and deselects
+/// every other face, so MeshLab users can feed the detection to other filters.
+template <class MeshType>
+std::size_t selectChamferFaces(MeshType &m, MeshLabels<MeshType> &labels) {
+  std::size_t n = 0;
+  for (auto &f : m.face) {
+    if (f.IsD()) continue;
+    const FaceLabel l = labels.face[&f];
+    if (l == FaceLabel::Chamfer || l == FaceLabel::Corner) {
+      f.SetS();
+      ++n;
+    } else {
+      f.ClearS();
+    }
+  }
+  return n;
+}
+
+}  // namespace edge_sharpener

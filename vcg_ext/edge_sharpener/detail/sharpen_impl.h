@@ -1,0 +1,123 @@
+// Implementation of the entry points declared in edge_sharpener.h: the
+// stages run in order, each returning the counts that go into the report.
+#pragma once
+
+#include <vcg/complex/complex.h>
+#include <vcg/complex/algorithms/update/normal.h>
+
+#include "../cleanup.h"
+#include "../colorize.h"
+#include "../filters.h"
+#include "../input_check.h"
+#include "../placement.h"
+#include "../smooth_edges.h"
+#include "../subdivision.h"
+
+namespace edge_sharpener {
+
+namespace detail {
+
+inline void reportProgress(const SharpenOptions &opt, int percent, const char *stage) {
+  if (opt.progress) opt.progress(percent, stage);
+}
+
+template <class MeshType>
+double longestEdgeLength(MeshType &m) {
+  double longest2 = 0;
+  for (auto &f : m.face) {
+    if (f.IsD()) continue;
+    for (int i = 0; i < 3; ++i)
+      longest2 = std::max(longest2, (positionOf(f.cV(i)) - positionOf(f.cV((i + 1) % 3))).SquaredNorm());
+  }
+  return std::sqrt(longest2);
+}
+
+/// Validates, then runs the smooth-edge test and the six filters.
+template <class MeshType>
+void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
+            SharpenReport &report) {
+  reportProgress(opt, 5, "Edge-Sharpener: smooth edges");
+  computeFaceNormals(m, labels);
+  report.smooth = labelSmoothEdges(m, labels, opt.smoothMultiplier);
+  reportProgress(opt, 20, "Edge-Sharpener: six filters");
+  report.filters = runSixFilters(m, labels);
+}
+
+template <class MeshType>
+SharpenReport validate(MeshType &m, const SharpenOptions &opt) {
+  vcg::tri::RequireFFAdjacency(m);
+  vcg::tri::RequireCompactness(m);
+  if (!(opt.smoothMultiplier > 0) || !std::isfinite(opt.smoothMultiplier))
+    throw InputError("smooth-edge multiplier must be a positive number");
+  if (!(opt.degenerateAngleRad >= 0 && opt.degenerateAngleRad < M_PI / 3))
+    throw InputError("degenerate-triangle angle must be in [0, 60) degrees");
+  if (!(opt.parallelAngleRad >= 0 && opt.parallelAngleRad < M_PI / 2))
+    throw InputError("parallel-plane tolerance must be in [0, 90) degrees");
+  const std::string problem = findInputProblem(m);
+  if (!problem.empty()) throw InputError(problem);
+  SharpenReport report;
+  report.inputVertices = m.vert.size();
+  report.inputFaces = m.face.size();
+  report.longestInputEdge = longestEdgeLength(m);
+  return report;
+}
+
+}  // namespace detail
+
+template <class MeshType>
+SharpenReport detectChamfers(MeshType &m, const SharpenOptions &opt) {
+  SharpenReport report = detail::validate(m, opt);
+  MeshLabels<MeshType> labels(m);
+  detail::detect(m, labels, opt, report);
+  colorize(m, labels);
+  selectChamferFaces(m, labels);
+  report.outputVertices = m.vert.size();
+  report.outputFaces = m.face.size();
+  detail::reportProgress(opt, 100, "Edge-Sharpener: done");
+  return report;
+}
+
+template <class MeshType>
+SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
+  using Alloc = vcg::tri::Allocator<MeshType>;
+  if (opt.colorize) {
+    vcg::tri::RequirePerFaceColor(m);
+    vcg::tri::RequirePerVertexColor(m);
+  }
+  SharpenReport report = detail::validate(m, opt);
+  report.geometryChanged = true;
+  MeshLabels<MeshType> labels(m);
+  detail::detect(m, labels, opt, report);
+
+  detail::reportProgress(opt, 40, "Edge-Sharpener: subdivision");
+  const SplitPlan plan = planSplits(m, labels);
+  report.subdivision = subdivide(m, plan, labels);
+
+  detail::reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
+  report.placement = placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt);
+
+  detail::reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
+  report.cleanup = removeDegenerateTriangles(m, plan, labels, opt.degenerateAngleRad);
+  // Outcomes as they stand after cleanup (collapsed vertices are gone).
+  report.placement.byOutcome.fill(0);
+  report.placement.maxDisplacement = 0;
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+    const auto &v = m.vert[plan.originalVertexCount + k];
+    if (v.IsD()) continue;
+    ++report.placement.byOutcome[int(labels.placement[&v])];
+    report.placement.maxDisplacement = std::max(
+        report.placement.maxDisplacement, (positionOf(&v) - plan.inserted[k].rest).Norm());
+  }
+
+  if (opt.colorize) colorize(m, labels);
+  Alloc::CompactEveryVector(m);
+  if (vcg::tri::HasPerFaceNormal(m)) vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(m);
+  if (vcg::tri::HasPerVertexNormal(m))
+    vcg::tri::UpdateNormal<MeshType>::PerVertexNormalized(m);
+  report.outputVertices = m.vert.size();
+  report.outputFaces = m.face.size();
+  detail::reportProgress(opt, 100, "Edge-Sharpener: done");
+  return report;
+}
+
+}  // namespace edge_sharpener

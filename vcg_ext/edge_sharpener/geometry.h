@@ -1,0 +1,107 @@
+// Pure geometry of Edge-Sharpener: plane intersections and the tests of the
+// paper's degenerate cases. No mesh here; everything in double precision.
+//
+// Notation (paper, section 3): a chamfer edge AB; P is the plane through A
+// with unit normal N, Q the plane through B with unit normal M; a corner
+// triangle ABC adds the plane R through C with unit normal L.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include <vcg/space/point3.h>
+
+namespace edge_sharpener {
+
+using Vec3 = vcg::Point3d;
+
+/// A plane {X : normal . X = normal . point}; `normal` has unit length.
+struct Plane {
+  Vec3 point;
+  Vec3 normal;
+};
+
+/// Angle between two vectors in [0, pi]; 0 when either is zero.
+inline double angleBetween(const Vec3 &u, const Vec3 &v) {
+  return std::atan2((u ^ v).Norm(), u * v);
+}
+
+/// The point of the line P∩Q closest to `target`, or nothing when the planes
+/// are parallel within `parallelAngleRad`.
+///
+/// Derivation: the closest point is X = target + a N + b M (the correction is
+/// orthogonal to the line direction N x M). Imposing N.X = N.A and M.X = M.B
+/// with c = N.M gives  [1 c; c 1] [a b]^T = [hN hM]^T,  hN = N.(A - target),
+/// hM = M.(B - target), whose determinant 1 - c^2 = |N x M|^2 vanishes
+/// exactly for parallel planes. (The paper's printed closed form is damaged;
+/// this solves the same problem directly.)
+inline std::optional<Vec3> closestPointOnPlanePairLine(const Plane &p, const Plane &q,
+                                                        const Vec3 &target,
+                                                        double parallelAngleRad) {
+  const double sinTol = std::sin(parallelAngleRad);
+  const double det = (p.normal ^ q.normal).SquaredNorm();  // = 1 - c^2
+  if (!(det > sinTol * sinTol)) return std::nullopt;       // also rejects NaN
+  const double c = p.normal * q.normal;
+  const double hN = p.normal * (p.point - target);
+  const double hM = q.normal * (q.point - target);
+  const double a = (hN - c * hM) / det;
+  const double b = (hM - c * hN) / det;
+  return target + p.normal * a + q.normal * b;
+}
+
+/// The common point of three planes (Cramer's rule), or nothing when their
+/// normals are coplanar: |N . (M x L)| below sin(parallelAngleRad).
+inline std::optional<Vec3> intersectThreePlanes(const Plane &p, const Plane &q, const Plane &r,
+                                                double parallelAngleRad) {
+  const Vec3 &n = p.normal, &m = q.normal, &l = r.normal;
+  const double triple = n * (m ^ l);
+  if (!(std::abs(triple) > std::sin(parallelAngleRad))) return std::nullopt;
+  const double dn = n * p.point, dm = m * q.point, dl = l * r.point;
+  return ((m ^ l) * dn + (l ^ n) * dm + (n ^ m) * dl) / triple;
+}
+
+/// How a chamfer edge AB sits between the planes P (through A) and Q (through B).
+enum class EdgeConvexity { Convex, Concave, Mixed, Flat };
+
+/// Classifies the chamfer edge AB by where each endpoint lies relative to the
+/// other endpoint's plane. Across a convex sharp edge B lies below P and A
+/// below Q; across a concave one both lie above. One above and one below
+/// means the chamfer strip is bordered by a concave edge on one side and a
+/// convex edge on the other (paper, section 3): its plane intersection does
+/// not describe a sharp edge. Offsets below `flatTolerance` x |AB| count as 0.
+inline EdgeConvexity classifyChamferEdge(const Plane &p, const Plane &q, double flatTolerance) {
+  const Vec3 ab = q.point - p.point;
+  const double tol = flatTolerance * ab.Norm();
+  const double sB = p.normal * ab;     // B relative to P
+  const double sA = -(q.normal * ab);  // A relative to Q
+  const auto sign = [tol](double s) { return s > tol ? 1 : (s < -tol ? -1 : 0); };
+  const int b = sign(sB), a = sign(sA);
+  if (a == 0 || b == 0) return a + b < 0 ? EdgeConvexity::Convex
+                               : a + b > 0 ? EdgeConvexity::Concave
+                                           : EdgeConvexity::Flat;
+  if (a != b) return EdgeConvexity::Mixed;
+  return a < 0 ? EdgeConvexity::Convex : EdgeConvexity::Concave;
+}
+
+/// Smallest interior angle of triangle abc in radians (0 for a degenerate one).
+inline double minTriangleAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
+  const double ta = angleBetween(b - a, c - a);
+  const double tb = angleBetween(c - b, a - b);
+  const double tc = angleBetween(a - c, b - c);
+  const double m = std::min({ta, tb, tc});
+  return std::isfinite(m) ? m : 0.0;
+}
+
+/// Largest interior angle of triangle abc in radians.
+inline double maxTriangleAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
+  return std::max({angleBetween(b - a, c - a), angleBetween(c - b, a - b),
+                   angleBetween(a - c, b - c)});
+}
+
+/// Interior angle at vertex `a` of triangle abc (the paper's weight).
+inline double cornerAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
+  return angleBetween(b - a, c - a);
+}
+
+}  // namespace edge_sharpener

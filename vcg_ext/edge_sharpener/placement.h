@@ -1,0 +1,139 @@
+// Stage 5: moves each inserted vertex onto the intersection of the planes
+// extrapolated from the adjacent smooth regions (paper, Figures 5 and 6),
+// or keeps it at rest for one of the paper's degenerate cases.
+#pragma once
+
+#include <vector>
+
+#include "options.h"
+#include "subdivision.h"
+
+namespace edge_sharpener {
+
+/// The unit "support" normal of every vertex: the sum of the normals of its
+/// incident red triangles weighted by the triangle's angle at the vertex
+/// (paper: "as weights, we use the angle between the two edges of the
+/// incident triangle that meet at A"). Zero where no red triangle touches it.
+template <class MeshType>
+std::vector<Vec3> computeSupportNormals(MeshType &m, MeshLabels<MeshType> &labels) {
+  std::vector<Vec3> normal(m.vert.size(), Vec3(0, 0, 0));
+  for (auto &f : m.face) {
+    if (f.IsD() || labels.face[&f] != FaceLabel::Red) continue;
+    const Vec3 p[3] = {positionOf(f.cV(0)), positionOf(f.cV(1)), positionOf(f.cV(2))};
+    for (int i = 0; i < 3; ++i) {
+      const double w = cornerAngle(p[i], p[(i + 1) % 3], p[(i + 2) % 3]);
+      normal[vcg::tri::Index(m, f.cV(i))] += labels.normal[&f] * w;
+    }
+  }
+  for (auto &n : normal) {
+    const double len = n.Norm();
+    n = len > 1e-12 ? n / len : Vec3(0, 0, 0);
+  }
+  return normal;
+}
+
+/// Where the planes put one inserted vertex, before the edge-length check.
+/// \return the outcome and, for Placement::Moved, the target in `target`.
+inline Placement proposePlacement(const InsertedVertexSource &src, const std::vector<Vec3> &origPos,
+                                  const std::vector<Vec3> &supportNormal,
+                                  const SharpenOptions &opt, Vec3 &target) {
+  Plane planes[3];
+  for (int i = 0; i < src.originalCount; ++i) {
+    planes[i] = Plane{origPos[src.original[i]], supportNormal[src.original[i]]};
+    if (planes[i].normal.SquaredNorm() == 0) return Placement::NoSupportPlane;
+  }
+  if (opt.convexityCheck) {
+    const double flat = std::sin(opt.parallelAngleRad);
+    const int pairs = src.originalCount == 2 ? 1 : 3;  // AB, or AB BC CA
+    for (int i = 0; i < pairs; ++i) {
+      const int j = (i + 1) % src.originalCount;
+      if (classifyChamferEdge(planes[i], planes[j], flat) == EdgeConvexity::Mixed)
+        return Placement::MixedConvexity;
+    }
+  }
+  if (src.originalCount == 2) {
+    auto x = closestPointOnPlanePairLine(planes[0], planes[1], src.rest, opt.parallelAngleRad);
+    if (!x) return Placement::ParallelPlanes;
+    target = *x;
+  } else {
+    auto x = intersectThreePlanes(planes[0], planes[1], planes[2], opt.parallelAngleRad);
+    if (!x) return Placement::CoplanarNormals;
+    target = *x;
+  }
+  return Placement::Moved;
+}
+
+/// Edge-length check (paper, Figure 7): an inserted vertex may not create an
+/// edge longer than the longest edge of the input. Offending moved vertices
+/// return to rest; repeated until stable, since a return can lengthen an
+/// edge to another moved vertex. \return vertices sent back.
+template <class MeshType>
+std::size_t enforceEdgeLength(MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels,
+                              std::vector<Vec3> &insertedPos, double longestEdge) {
+  const std::size_t n0 = plan.originalVertexCount;
+  const double limit2 = longestEdge * longestEdge;
+  const auto pos = [&](const typename MeshType::VertexType *v) {
+    const std::size_t i = vcg::tri::Index(m, v);
+    return i >= n0 ? insertedPos[i - n0] : positionOf(v);
+  };
+  std::size_t rejected = 0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (auto &f : m.face) {
+      const FaceLabel label = labels.face[&f];
+      if (f.IsD() || (label != FaceLabel::Chamfer && label != FaceLabel::Corner)) continue;
+      for (int i = 0; i < 3; ++i) {
+        const auto *a = f.cV(i), *b = f.cV((i + 1) % 3);
+        const bool aMoved = labels.placement[a] == Placement::Moved;
+        const bool bMoved = labels.placement[b] == Placement::Moved;
+        if (!aMoved && !bMoved) continue;
+        if ((pos(a) - pos(b)).SquaredNorm() <= limit2) continue;
+        for (const auto *v : {a, b}) {
+          if (labels.placement[v] != Placement::Moved) continue;
+          const std::size_t k = vcg::tri::Index(m, v) - n0;
+          labels.placement[v] = Placement::EdgeTooLong;
+          insertedPos[k] = plan.inserted[k].rest;
+          ++rejected;
+        }
+        changed = true;
+      }
+    }
+  }
+  return rejected;
+}
+
+/// Stage 5: proposes a position for every inserted vertex, applies the
+/// degenerate-case fallbacks, and writes the positions into the mesh.
+/// Original vertices are never touched.
+/// \pre subdivide() ran with `plan`; `longestEdge` is the input's longest edge.
+template <class MeshType>
+PlacementStats placeInsertedVertices(MeshType &m, const SplitPlan &plan,
+                                     MeshLabels<MeshType> &labels, double longestEdge,
+                                     const SharpenOptions &opt) {
+  using Scalar = typename MeshType::ScalarType;
+  PlacementStats s;
+  const std::size_t n0 = plan.originalVertexCount;
+  const std::vector<Vec3> support = computeSupportNormals(m, labels);
+  std::vector<Vec3> origPos(n0);
+  for (std::size_t i = 0; i < n0; ++i) origPos[i] = positionOf(&m.vert[i]);
+
+  std::vector<Vec3> insertedPos(plan.inserted.size());
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+    insertedPos[k] = plan.inserted[k].rest;
+    Vec3 target;
+    const Placement p = proposePlacement(plan.inserted[k], origPos, support, opt, target);
+    if (p == Placement::Moved) insertedPos[k] = target;
+    labels.placement[n0 + k] = p;
+  }
+  if (opt.edgeLengthCheck) enforceEdgeLength(m, plan, labels, insertedPos, longestEdge);
+
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+    m.vert[n0 + k].P() = vcg::Point3<Scalar>::Construct(insertedPos[k]);
+    ++s.byOutcome[int(labels.placement[n0 + k])];
+    s.maxDisplacement =
+        std::max(s.maxDisplacement, (insertedPos[k] - plan.inserted[k].rest).Norm());
+  }
+  return s;
+}
+
+}  // namespace edge_sharpener

@@ -1,0 +1,193 @@
+// Stages 3 and 4: the split plan (which edges and faces receive a new vertex)
+// and the subdivision that carries it out (paper, Figure 4).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <vcg/complex/complex.h>
+#include <vcg/complex/algorithms/update/topology.h>
+
+#include "mesh_labels.h"
+#include "report.h"
+
+namespace edge_sharpener {
+
+/// Where an inserted vertex comes from: the original vertices whose support
+/// planes place it (2 for a chamfer-edge vertex, 3 for a corner vertex) and
+/// its unmoved ("rest") position, the midpoint or the centroid.
+struct InsertedVertexSource {
+  std::array<std::size_t, 3> original{};
+  int originalCount = 0;
+  Vec3 rest;
+};
+
+/// One chamfer or corner face and the inserted vertices on it, as indices
+/// into SplitPlan::inserted (-1: none).
+struct SplitFace {
+  std::size_t face = 0;
+  std::array<int, 3> edgeVertex{-1, -1, -1};
+  int centerVertex = -1;
+  /// Two-chamfer-edge faces only: the quad left after cutting the apex is
+  /// split along the diagonal from the free edge's first vertex (0) or second (1).
+  int diagonal = 0;
+};
+
+struct SplitPlan {
+  std::size_t originalVertexCount = 0;  ///< inserted vertex k gets index originalVertexCount + k
+  std::vector<InsertedVertexSource> inserted;
+  std::vector<SplitFace> faces;
+};
+
+/// Stage 3: one new vertex in the middle of every chamfer edge (shared by
+/// both faces of the edge) and of every corner triangle; never on an edge
+/// between a chamfer and a non-chamfer triangle (such an edge is red or gray).
+/// \pre runSixFilters() ran; FF topology up to date; the mesh is compact.
+template <class MeshType>
+SplitPlan planSplits(MeshType &m, MeshLabels<MeshType> &labels) {
+  SplitPlan plan;
+  plan.originalVertexCount = m.vert.size();
+  ScopedFaceAttribute<MeshType, int> splitIndex(m, -1);
+  for (auto &f : m.face) {
+    const FaceLabel label = labels.face[&f];
+    if (f.IsD() || (label != FaceLabel::Chamfer && label != FaceLabel::Corner)) continue;
+    splitIndex[&f] = int(plan.faces.size());
+    plan.faces.push_back(SplitFace{vcg::tri::Index(m, &f)});
+  }
+  const auto addVertex = [&](std::initializer_list<const typename MeshType::VertexType *> vs) {
+    InsertedVertexSource s;
+    Vec3 sum(0, 0, 0);
+    for (auto *v : vs) {
+      s.original[s.originalCount++] = vcg::tri::Index(m, v);
+      sum += positionOf(v);
+    }
+    s.rest = sum / double(s.originalCount);
+    plan.inserted.push_back(s);
+    return int(plan.inserted.size() - 1);
+  };
+  for (std::size_t k = 0; k < plan.faces.size(); ++k) {
+    SplitFace &sf = plan.faces[k];
+    auto *f = &m.face[sf.face];
+    for (int i = 0; i < 3; ++i) {
+      if (labels.edge[f][i] != EdgeLabel::Chamfer) continue;
+      auto *g = f->FFp(i);
+      const int twin = splitIndex[g];
+      // The face listed first creates the shared vertex; the other reuses it.
+      if (twin >= 0 && std::size_t(twin) < k)
+        sf.edgeVertex[i] = plan.faces[twin].edgeVertex[f->FFi(i)];
+      else
+        sf.edgeVertex[i] = addVertex({f->cV(i), f->cV((i + 1) % 3)});
+    }
+    if (labels.face[f] == FaceLabel::Corner) {
+      sf.centerVertex = addVertex({f->cV(0), f->cV(1), f->cV(2)});
+    } else {
+      const int free = sf.edgeVertex[0] < 0 ? 0 : sf.edgeVertex[1] < 0 ? 1 : 2;
+      if (sf.edgeVertex[(free + 1) % 3] >= 0 && sf.edgeVertex[(free + 2) % 3] >= 0) {
+        // Free edge a-b, apex c; m1 on b-c, m2 on c-a. Shorter diagonal wins.
+        const Vec3 a = positionOf(f->cV(free)), b = positionOf(f->cV((free + 1) % 3));
+        const Vec3 m1 = plan.inserted[sf.edgeVertex[(free + 1) % 3]].rest;
+        const Vec3 m2 = plan.inserted[sf.edgeVertex[(free + 2) % 3]].rest;
+        sf.diagonal = (a - m1).SquaredNorm() <= (b - m2).SquaredNorm() ? 0 : 1;
+      }
+    }
+  }
+  return plan;
+}
+
+namespace detail {
+
+/// The child triangles of one split face as vertex indices, first child
+/// first; orientation follows the parent.
+inline std::vector<std::array<std::size_t, 3>> childTriangles(const SplitFace &sf,
+                                                              const std::array<std::size_t, 3> &v,
+                                                              std::size_t firstInserted) {
+  const auto ins = [&](int k) { return firstInserted + std::size_t(k); };
+  std::vector<std::array<std::size_t, 3>> out;
+  if (sf.centerVertex >= 0) {  // corner: fan of six around the centre
+    const std::size_t c = ins(sf.centerVertex);
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t e = ins(sf.edgeVertex[i]);
+      out.push_back({v[i], e, c});
+      out.push_back({e, v[(i + 1) % 3], c});
+    }
+    return out;
+  }
+  int split = 0;
+  for (int i = 0; i < 3; ++i) split += sf.edgeVertex[i] >= 0;
+  if (split == 1) {
+    const int i = sf.edgeVertex[0] >= 0 ? 0 : sf.edgeVertex[1] >= 0 ? 1 : 2;
+    const std::size_t e = ins(sf.edgeVertex[i]);
+    out.push_back({v[i], e, v[(i + 2) % 3]});
+    out.push_back({e, v[(i + 1) % 3], v[(i + 2) % 3]});
+    return out;
+  }
+  const int k = sf.edgeVertex[0] < 0 ? 0 : sf.edgeVertex[1] < 0 ? 1 : 2;  // the free edge
+  const std::size_t a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
+  const std::size_t m1 = ins(sf.edgeVertex[(k + 1) % 3]), m2 = ins(sf.edgeVertex[(k + 2) % 3]);
+  out.push_back({m1, c, m2});
+  if (sf.diagonal == 0) {
+    out.push_back({a, b, m1});
+    out.push_back({a, m1, m2});
+  } else {
+    out.push_back({a, b, m2});
+    out.push_back({b, m1, m2});
+  }
+  return out;
+}
+
+}  // namespace detail
+
+/// Stage 4: inserts the planned vertices at their rest positions and splits
+/// each chamfer face into 2 or 3 triangles and each corner face into a fan of
+/// 6, preserving orientation. Children keep the parent's label and data
+/// (colour, quality, flags); FF topology is rebuilt.
+template <class MeshType>
+SubdivisionStats subdivide(MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels) {
+  using Scalar = typename MeshType::ScalarType;
+  SubdivisionStats s;
+  s.insertedVertices = plan.inserted.size();
+  if (plan.faces.empty()) return s;
+
+  auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, plan.inserted.size());
+  for (const auto &src : plan.inserted) {
+    vi->P() = vcg::Point3<Scalar>::Construct(src.rest);
+    ++vi;
+  }
+  std::size_t extra = 0;
+  std::vector<std::vector<std::array<std::size_t, 3>>> children(plan.faces.size());
+  for (std::size_t k = 0; k < plan.faces.size(); ++k) {
+    const auto &f = m.face[plan.faces[k].face];
+    const std::array<std::size_t, 3> v{vcg::tri::Index(m, f.cV(0)), vcg::tri::Index(m, f.cV(1)),
+                                       vcg::tri::Index(m, f.cV(2))};
+    children[k] = detail::childTriangles(plan.faces[k], v, plan.originalVertexCount);
+    extra += children[k].size() - 1;
+    switch (children[k].size()) {
+      case 2: ++s.facesSplitIn2; break;
+      case 3: ++s.facesSplitIn3; break;
+      default: ++s.facesSplitIn6; break;
+    }
+  }
+  const std::size_t firstNew = m.face.size();
+  vcg::tri::Allocator<MeshType>::AddFaces(m, extra);
+  s.addedFaces = extra;
+
+  std::size_t next = firstNew;
+  for (std::size_t k = 0; k < plan.faces.size(); ++k) {
+    auto &parent = m.face[plan.faces[k].face];
+    const FaceLabel label = labels.face[&parent];
+    for (std::size_t c = 0; c < children[k].size(); ++c) {
+      auto &child = c == 0 ? parent : m.face[next++];
+      if (c != 0) {
+        child.ImportData(parent);
+        labels.face[&child] = label;
+        labels.normal[&child] = labels.normal[&parent];
+      }
+      for (int j = 0; j < 3; ++j) child.V(j) = &m.vert[children[k][c][j]];
+    }
+  }
+  vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+  return s;
+}
+
+}  // namespace edge_sharpener
