@@ -103,14 +103,14 @@ std::pair<std::size_t, std::size_t> paintRedBoundaries(MeshType &m, MeshLabels<M
 }
 
 /// Filter 5: paint blue (chamfer) each non-red edge joining two red vertices.
-/// Boundary edges are excluded: a vertex inserted there could only move the
-/// open rim of the surface, which no plane pair describes.
+/// A boundary edge can be one too (an open scan cut across a chamfer): its
+/// vertex then moves along the crease to the rim.
 /// \return the number of chamfer edges.
 template <class MeshType>
 std::size_t paintChamferEdges(MeshType &m, MeshLabels<MeshType> &labels) {
   std::size_t count = 0;
-  forEachEdge(m, [&](auto *f, int i, bool boundary) {
-    if (boundary || labels.edge[f][i] == EdgeLabel::Red) return;
+  forEachEdge(m, [&](auto *f, int i, bool) {
+    if (labels.edge[f][i] == EdgeLabel::Red) return;
     if (labels.vertex[f->cV(i)] == VertexLabel::Red &&
         labels.vertex[f->cV((i + 1) % 3)] == VertexLabel::Red) {
       labels.setEdge(f, i, EdgeLabel::Chamfer);

@@ -1,0 +1,222 @@
+// The six filters, placement and its fallbacks on hand-built height fields
+// whose labels and exact results are known in closed form.
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include "edge_sharpener/edge_sharpener.h"
+#include "edge_sharpener/mesh_types.h"
+
+namespace es = edge_sharpener;
+
+namespace {
+
+/// A regular grid of (nx+1) x (ny+1) vertices with spacing h over z = f(x, y),
+/// every cell split by the same diagonal. Open (boundary all around).
+template <class MeshType>
+void makeHeightField(MeshType &m, int nx, int ny, double h,
+                     const std::function<double(double, double)> &f) {
+  using Alloc = vcg::tri::Allocator<MeshType>;
+  using Coord = typename MeshType::CoordType;
+  m.Clear();
+  Alloc::AddVertices(m, std::size_t(nx + 1) * (ny + 1));
+  const auto id = [&](int i, int j) { return std::size_t(j) * (nx + 1) + i; };
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) m.vert[id(i, j)].P() = Coord(i * h, j * h, f(i * h, j * h));
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      Alloc::AddFace(m, &m.vert[id(i, j)], &m.vert[id(i + 1, j)], &m.vert[id(i + 1, j + 1)]);
+      Alloc::AddFace(m, &m.vert[id(i, j)], &m.vert[id(i + 1, j + 1)], &m.vert[id(i, j + 1)]);
+    }
+  vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+}
+
+constexpr int kNx = 20, kNy = 12;
+constexpr double kH = 0.1;
+constexpr double kRidgeX = 1.03;  // between grid columns 10 and 11
+
+double ridge(double x, double) { return 0.5 - 0.5 * std::abs(x - kRidgeX); }
+double valley(double x, double) { return 0.5 * std::abs(x - kRidgeX); }
+
+/// True if every face lies on one side of x = kRidgeX (it does not cut
+/// across the crease) and all its vertices are on the exact surface.
+template <class MeshType>
+double maxDeviationFromCrease(MeshType &m, double (*f)(double, double)) {
+  double worst = 0;
+  for (auto &face : m.face) {
+    if (face.IsD()) continue;
+    bool left = false, right = false;
+    for (int k = 0; k < 3; ++k) {
+      const auto &p = face.cP(k);
+      worst = std::max(worst, std::abs(double(p[2]) - f(p[0], p[1])));
+      left |= p[0] < kRidgeX - 1e-5;
+      right |= p[0] > kRidgeX + 1e-5;
+    }
+    if (left && right) worst = std::max(worst, 1.0);  // a face still cuts the crease
+  }
+  return worst;
+}
+
+es::SharpenOptions defaults() { return {}; }
+
+}  // namespace
+
+TEST(SixFilters, RidgeLabelsMatchTheHandCount) {
+  es::Mesh m;
+  makeHeightField(m, kNx, kNy, kH, ridge);
+  const es::SharpenReport r = es::detectChamfers(m, defaults());
+  // Chamfer column: cells between x = 1.0 and 1.1, one per row (kNy rows).
+  // Blue: the kNy + 1 horizontal edges (two on the border) and kNy diagonals.
+  EXPECT_EQ(r.filters.chamferEdges, std::size_t(2 * kNy + 1));
+  EXPECT_EQ(r.filters.chamferFaces, std::size_t(2 * kNy));
+  EXPECT_EQ(r.filters.cornerFaces, 0u);
+  EXPECT_EQ(r.filters.redFaces, std::size_t(2 * kNx * kNy - 2 * kNy));
+  // Interior red vertices: grid vertices not on the border and not on the
+  // chamfer column's lines (x = 1.0, 1.1).
+  EXPECT_EQ(r.filters.interiorRedVertices, std::size_t((kNx - 1 - 2) * (kNy - 1)));
+  EXPECT_EQ(r.smooth.boundaryEdges, std::size_t(2 * (kNx + kNy)));
+  // The selection marks exactly the chamfer faces; geometry is unchanged.
+  std::size_t selected = 0;
+  for (auto &f : m.face) selected += f.IsS();
+  EXPECT_EQ(selected, std::size_t(2 * kNy));
+  EXPECT_EQ(m.VN(), (kNx + 1) * (kNy + 1));
+}
+
+TEST(Sharpen, ConvexRidgeIsRecoveredExactly) {
+  es::Mesh m;
+  makeHeightField(m, kNx, kNy, kH, ridge);
+  std::vector<vcg::Point3f> before;
+  for (auto &v : m.vert) before.push_back(v.P());
+  EXPECT_GT(maxDeviationFromCrease(m, ridge), 0.5);  // the input cuts the crease
+
+  const es::SharpenReport r = es::sharpen(m, defaults());
+  EXPECT_EQ(r.subdivision.insertedVertices, std::size_t(2 * kNy + 1));
+  EXPECT_EQ(r.subdivision.facesSplitIn3, std::size_t(2 * kNy));
+  EXPECT_EQ(r.subdivision.facesSplitIn2, 0u);
+  EXPECT_EQ(r.placement.moved(), r.subdivision.insertedVertices);
+  EXPECT_EQ(r.placement.fallbacks(), 0u);
+  EXPECT_LT(maxDeviationFromCrease(m, ridge), 1e-5);
+  EXPECT_EQ(r.outputVertices, before.size() + r.subdivision.insertedVertices);
+  EXPECT_EQ(r.outputFaces, r.inputFaces + r.subdivision.addedFaces);
+  for (std::size_t i = 0; i < before.size(); ++i) ASSERT_EQ(m.vert[i].P(), before[i]) << i;
+}
+
+TEST(Sharpen, ConcaveValleyIsRecoveredExactly) {
+  es::Mesh m;
+  makeHeightField(m, kNx, kNy, kH, valley);
+  const es::SharpenReport r = es::sharpen(m, defaults());
+  EXPECT_EQ(r.placement.moved(), std::size_t(2 * kNy + 1));
+  EXPECT_LT(maxDeviationFromCrease(m, valley), 1e-5);
+}
+
+TEST(Sharpen, DoublePrecisionMeshGivesTheSameResult) {
+  es::Mesh mf;
+  es::MeshD md;
+  makeHeightField(mf, kNx, kNy, kH, ridge);
+  makeHeightField(md, kNx, kNy, kH, ridge);
+  const auto rf = es::sharpen(mf, defaults());
+  const auto rd = es::sharpen(md, defaults());
+  EXPECT_EQ(rf.outputFaces, rd.outputFaces);
+  EXPECT_EQ(rf.placement.byOutcome, rd.placement.byOutcome);
+  EXPECT_LT(maxDeviationFromCrease(md, ridge), 1e-12);
+}
+
+namespace {
+// A step: two parallel slopes joined by a riser narrower than a cell. The
+// chamfer is bordered by a concave edge below and a convex edge above.
+double stepParallel(double x, double) { return x < kRidgeX ? 0.1 * x : 0.1 * x + 0.3; }
+// Slopes that are not parallel, with the same step: the plane intersection
+// exists but lies far away, on the wrong side.
+double stepTilted(double x, double) {
+  return x < kRidgeX ? 0.3 * (x - kRidgeX) : 0.6 - 0.3 * (x - kRidgeX);
+}
+}  // namespace
+
+TEST(Fallbacks, MixedConvexityKeepsVerticesAtRest) {
+  es::Mesh m;
+  makeHeightField(m, kNx, kNy, kH, stepTilted);
+  const auto r = es::sharpen(m, defaults());
+  ASSERT_GT(r.subdivision.insertedVertices, 0u);
+  EXPECT_EQ(r.placement.count(es::Placement::MixedConvexity), r.subdivision.insertedVertices);
+  EXPECT_EQ(r.placement.moved(), 0u);
+}
+
+TEST(Fallbacks, EdgeLengthCheckRejectsFarIntersections) {
+  es::Mesh m;
+  makeHeightField(m, kNx, kNy, kH, stepTilted);
+  es::SharpenOptions opt;
+  opt.convexityCheck = false;
+  const auto r = es::sharpen(m, opt);
+  EXPECT_EQ(r.placement.count(es::Placement::EdgeTooLong), r.subdivision.insertedVertices);
+  // No edge of the output is longer than the input's longest edge.
+  for (auto &f : m.face)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_LE(vcg::Distance(f.cP(k), f.cP((k + 1) % 3)), r.longestInputEdge * (1 + 1e-6));
+
+  es::Mesh unchecked;
+  makeHeightField(unchecked, kNx, kNy, kH, stepTilted);
+  opt.edgeLengthCheck = false;
+  const auto u = es::sharpen(unchecked, opt);
+  EXPECT_EQ(u.placement.moved(), u.subdivision.insertedVertices);
+  double longest = 0;  // without the check, placements do create too long edges
+  for (auto &f : unchecked.face)
+    for (int k = 0; k < 3; ++k)
+      longest = std::max<double>(longest, vcg::Distance(f.cP(k), f.cP((k + 1) % 3)));
+  EXPECT_GT(longest, 1.5 * u.longestInputEdge);
+}
+
+TEST(Fallbacks, ParallelPlanesKeepVerticesAtRest) {
+  es::Mesh m;
+  makeHeightField(m, kNx, kNy, kH, stepParallel);
+  es::SharpenOptions opt;
+  opt.convexityCheck = false;  // otherwise the step is caught as mixed first
+  const auto r = es::sharpen(m, opt);
+  ASSERT_GT(r.subdivision.insertedVertices, 0u);
+  EXPECT_EQ(r.placement.count(es::Placement::ParallelPlanes), r.subdivision.insertedVertices);
+}
+
+TEST(Sharpen, FlatSheetIsLeftUntouched) {
+  es::Mesh m;
+  makeHeightField(m, 8, 8, kH, [](double, double) { return 0.25; });
+  const auto r = es::sharpen(m, defaults());
+  EXPECT_EQ(r.filters.chamferEdges, 0u);
+  EXPECT_EQ(r.outputFaces, r.inputFaces);
+  EXPECT_EQ(r.outputVertices, r.inputVertices);
+}
+
+TEST(InputErrors, RefusedMeshesAreLeftUnchanged) {
+  es::Mesh cloud;
+  vcg::tri::Allocator<es::Mesh>::AddVertices(cloud, 3);
+  EXPECT_THROW(es::sharpen(cloud, defaults()), es::InputError);
+  EXPECT_EQ(cloud.VN(), 3);
+
+  es::Mesh empty;
+  EXPECT_THROW(es::sharpen(empty, defaults()), es::InputError);
+
+  es::Mesh nan;
+  makeHeightField(nan, 4, 4, kH, ridge);
+  nan.vert[7].P()[2] = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_THROW(es::sharpen(nan, defaults()), es::InputError);
+  EXPECT_EQ(nan.FN(), 32);
+
+  // A third face on an interior edge makes it non-manifold.
+  es::Mesh fin;
+  makeHeightField(fin, 4, 4, kH, ridge);
+  auto *extra = &*vcg::tri::Allocator<es::Mesh>::AddVertices(fin, 1);
+  extra->P() = vcg::Point3f(0.15f, 0.15f, 1.0f);
+  vcg::tri::Allocator<es::Mesh>::AddFace(fin, &fin.vert[0], &fin.vert[6], extra);
+  const int faces = fin.FN();
+  try {
+    es::sharpen(fin, defaults());
+    FAIL() << "non-manifold mesh accepted";
+  } catch (const es::InputError &e) {
+    EXPECT_NE(std::string(e.what()).find("non-manifold"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(fin.FN(), faces);
+
+  es::Mesh bad;
+  makeHeightField(bad, 4, 4, kH, ridge);
+  es::SharpenOptions opt;
+  opt.smoothMultiplier = -1;
+  EXPECT_THROW(es::sharpen(bad, opt), es::InputError);
+}

@@ -1,0 +1,139 @@
+// Pure-geometry functions: no mesh involved.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "edge_sharpener/geometry.h"
+
+namespace es = edge_sharpener;
+using es::Plane;
+using es::Vec3;
+
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+Vec3 unit(Vec3 v) { return v / v.Norm(); }
+
+double planeOffset(const Plane &p, const Vec3 &x) { return p.normal * (x - p.point); }
+
+}  // namespace
+
+TEST(PlanePairLine, PointLiesOnBothPlanesAndIsClosestToTarget) {
+  const Plane top{Vec3(0.2, 0, 1), Vec3(0, 0, 1)};
+  const Plane side{Vec3(1, 0.3, 0.5), Vec3(1, 0, 0)};
+  const Vec3 target(0.6, 0.15, 0.75);
+  const auto x = es::closestPointOnPlanePairLine(top, side, target, 1 * kDeg);
+  ASSERT_TRUE(x.has_value());
+  EXPECT_NEAR((*x - Vec3(1, 0.15, 1)).Norm(), 0, 1e-12);
+}
+
+TEST(PlanePairLine, RandomPlanesGiveExactClosestPoint) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Plane p{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
+    const Plane q{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
+    const Vec3 target(u(rng), u(rng), u(rng));
+    const auto x = es::closestPointOnPlanePairLine(p, q, target, 1 * kDeg);
+    if (!x) {
+      EXPECT_LE((p.normal ^ q.normal).Norm(), std::sin(1 * kDeg) + 1e-15) << trial;
+      continue;
+    }
+    EXPECT_NEAR(planeOffset(p, *x), 0, 1e-9);
+    EXPECT_NEAR(planeOffset(q, *x), 0, 1e-9);
+    // The correction is orthogonal to the line: target - x has no component along N x M.
+    const Vec3 dir = unit(p.normal ^ q.normal);
+    EXPECT_NEAR((target - *x) * dir, 0, 1e-9);
+  }
+}
+
+TEST(PlanePairLine, ParallelPlanesWithinToleranceAreRejected) {
+  const Plane p{Vec3(0, 0, 0), Vec3(0, 0, 1)};
+  const Plane nearlyParallel{Vec3(1, 0, 0), unit(Vec3(std::sin(0.5 * kDeg), 0, std::cos(0.5 * kDeg)))};
+  const Plane tilted{Vec3(1, 0, 0), unit(Vec3(std::sin(2 * kDeg), 0, std::cos(2 * kDeg)))};
+  EXPECT_FALSE(es::closestPointOnPlanePairLine(p, nearlyParallel, Vec3(0, 0, 0), 1 * kDeg));
+  EXPECT_TRUE(es::closestPointOnPlanePairLine(p, tilted, Vec3(0, 0, 0), 1 * kDeg));
+  const Plane antiParallel{Vec3(0, 0, 1), Vec3(0, 0, -1)};
+  EXPECT_FALSE(es::closestPointOnPlanePairLine(p, antiParallel, Vec3(0, 0, 0), 1 * kDeg));
+}
+
+TEST(ThreePlanes, CubeCornerIsRecovered) {
+  const Plane x{Vec3(1, 0.3, 0.2), Vec3(1, 0, 0)};
+  const Plane y{Vec3(0.5, 1, 0.9), Vec3(0, 1, 0)};
+  const Plane z{Vec3(0.1, 0.7, 1), Vec3(0, 0, 1)};
+  const auto w = es::intersectThreePlanes(x, y, z, 1 * kDeg);
+  ASSERT_TRUE(w.has_value());
+  EXPECT_NEAR((*w - Vec3(1, 1, 1)).Norm(), 0, 1e-12);
+}
+
+TEST(ThreePlanes, RandomPlanesMeetAtTheirCommonPoint) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int solved = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const Plane p{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
+    const Plane q{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
+    const Plane r{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
+    const auto w = es::intersectThreePlanes(p, q, r, 1 * kDeg);
+    const double triple = std::abs(p.normal * (q.normal ^ r.normal));
+    EXPECT_EQ(w.has_value(), triple > std::sin(1 * kDeg)) << trial;
+    if (!w) continue;
+    ++solved;
+    const double scale = 1.0 / triple;  // conditioning of the system
+    EXPECT_NEAR(planeOffset(p, *w), 0, 1e-12 * scale * 10);
+    EXPECT_NEAR(planeOffset(q, *w), 0, 1e-12 * scale * 10);
+    EXPECT_NEAR(planeOffset(r, *w), 0, 1e-12 * scale * 10);
+  }
+  EXPECT_GT(solved, 150);
+}
+
+TEST(ThreePlanes, CoplanarNormalsAreRejected) {
+  const Plane a{Vec3(0, 0, 0), Vec3(1, 0, 0)};
+  const Plane b{Vec3(0, 0, 0), Vec3(0, 1, 0)};
+  const Plane c{Vec3(1, 1, 0), unit(Vec3(1, 1, 0))};  // in the xy-plane of normals
+  EXPECT_FALSE(es::intersectThreePlanes(a, b, c, 1 * kDeg));
+  const Plane twin{Vec3(2, 0, 0), Vec3(1, 0, 0)};  // two equal normals
+  EXPECT_FALSE(es::intersectThreePlanes(a, b, twin, 1 * kDeg));
+}
+
+TEST(Convexity, CubeEdgeChamferIsConvex) {
+  // A on the top face, B on the side face x = 1 of the unit cube.
+  const Plane top{Vec3(0.8, 0, 1), Vec3(0, 0, 1)};
+  const Plane side{Vec3(1, 0, 0.8), Vec3(1, 0, 0)};
+  EXPECT_EQ(es::classifyChamferEdge(top, side, 1e-3), es::EdgeConvexity::Convex);
+}
+
+TEST(Convexity, InnerCornerChamferIsConcave) {
+  // L-shaped profile: floor z = 0 (normal up) meets wall x = 1 (normal -x).
+  const Plane floor{Vec3(0.8, 0, 0), Vec3(0, 0, 1)};
+  const Plane wall{Vec3(1, 0, 0.2), Vec3(-1, 0, 0)};
+  EXPECT_EQ(es::classifyChamferEdge(floor, wall, 1e-3), es::EdgeConvexity::Concave);
+}
+
+TEST(Convexity, StepBetweenConcaveAndConvexIsMixed) {
+  // B lies above P, A below Q: a step, not a sharp edge.
+  const Plane lowerTilted{Vec3(0, 0, 0), unit(Vec3(-0.3, 0, 1))};
+  const Plane upperTilted{Vec3(1, 0, 2), unit(Vec3(0.3, 0, 1))};
+  EXPECT_EQ(es::classifyChamferEdge(lowerTilted, upperTilted, 1e-3), es::EdgeConvexity::Mixed);
+}
+
+TEST(Convexity, SymmetricInSwappingTheEndpoints) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int trial = 0; trial < 100; ++trial) {
+    const Plane p{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
+    const Plane q{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
+    EXPECT_EQ(es::classifyChamferEdge(p, q, 1e-3), es::classifyChamferEdge(q, p, 1e-3));
+  }
+}
+
+TEST(TriangleAngles, EquilateralAndDegenerate) {
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0.5, std::sqrt(3.0) / 2, 0);
+  EXPECT_NEAR(es::minTriangleAngle(a, b, c), 60 * kDeg, 1e-12);
+  EXPECT_NEAR(es::maxTriangleAngle(a, b, c), 60 * kDeg, 1e-12);
+  EXPECT_EQ(es::minTriangleAngle(a, b, Vec3(2, 0, 0)), 0.0);        // collinear
+  EXPECT_EQ(es::minTriangleAngle(a, a, c), 0.0);                    // repeated vertex
+  EXPECT_NEAR(es::maxTriangleAngle(a, Vec3(2, 0, 0), b), M_PI, 1e-12);
+  EXPECT_NEAR(es::cornerAngle(a, b, Vec3(0, 1, 0)), 90 * kDeg, 1e-12);
+}
