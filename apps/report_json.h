@@ -41,7 +41,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
       {"cleanup",
        {{"degenerate_found", r.cleanup.degenerateFound}, {"collapses", r.cleanup.collapses},
         {"flips", r.cleanup.flips}, {"reverted", r.cleanup.reverted},
-        {"remaining", r.cleanup.remaining}}},
+        {"remaining", r.cleanup.remaining}, {"inherited", r.cleanup.inherited}}},
   };
 }
 

@@ -153,7 +153,8 @@ std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
 
 /// Stage 6: removes faces with an angle below `angleRad` among the faces made
 /// by subdivide(): needles by collapse, caps by flip, and otherwise by
-/// sending the face's moved vertices back to rest. Deleted elements are left
+/// sending the face's moved vertices back to rest. What is left is inherited
+/// from the input: children of input slivers, split at rest positions. Deleted elements are left
 /// flagged (compact afterwards).
 /// \pre placeInsertedVertices() ran; FF topology up to date.
 template <class MeshType>
@@ -185,7 +186,12 @@ CleanupStats removeDegenerateTriangles(MeshType &m, const SplitPlan &plan,
     }
     if (!changed) break;
   }
-  for (const auto &f : m.face) s.remaining += degenerate(f);
+  for (const auto &f : m.face) {
+    if (!degenerate(f)) continue;
+    bool moved = false;
+    for (int j = 0; j < 3; ++j) moved |= labels.placement[f.cV(j)] == Placement::Moved;
+    ++(moved ? s.remaining : s.inherited);
+  }
   return s;
 }
 

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include <cstring>  // wrap/callback.h uses strcpy without including it
+
 #include <wrap/callback.h>
 
 namespace edge_sharpener {

@@ -62,7 +62,8 @@ struct CleanupStats {
   std::size_t collapses = 0;        ///< edges collapsed between coinciding new vertices
   std::size_t flips = 0;            ///< edges flipped inside split faces
   std::size_t reverted = 0;         ///< inserted vertices moved back (counted in placement too)
-  std::size_t remaining = 0;        ///< new faces still below the threshold afterwards
+  std::size_t remaining = 0;   ///< faces with a moved vertex still below the threshold
+  std::size_t inherited = 0;   ///< degenerate children of input slivers, no vertex moved
 };
 
 struct SharpenReport {
@@ -106,7 +107,8 @@ inline std::string formatReport(const SharpenReport &r) {
   s << "\n";
   s << "cleanup: " << r.cleanup.degenerateFound << " degenerate faces found, "
     << r.cleanup.collapses << " collapses, " << r.cleanup.flips << " flips, "
-    << r.cleanup.reverted << " vertices reverted, " << r.cleanup.remaining << " remaining\n";
+    << r.cleanup.reverted << " vertices reverted, " << r.cleanup.remaining << " remaining, "
+    << r.cleanup.inherited << " inherited from input slivers\n";
   s << "output: " << r.outputVertices << " vertices, " << r.outputFaces << " faces\n";
   return s.str();
 }
