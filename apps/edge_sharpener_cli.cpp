@@ -1,16 +1,18 @@
 // edge-sharpener: command-line front end of the Edge-Sharpener core.
 //
 //   edge-sharpener IN OUT [--multiplier X] [--no-length-check] [--colorize]
-//                         [--detect-only] [--json]
+//                         [--detect-only] [--json] [--reference EXACT]
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "edge_sharpener/edge_sharpener.h"
+#include "edge_sharpener/mesh_distance.h"
 #include "edge_sharpener/mesh_types.h"
 #include "mesh_io.h"
 #include "report_json.h"
@@ -20,7 +22,7 @@ namespace es = edge_sharpener;
 namespace {
 
 struct CliOptions {
-  std::string input, output;
+  std::string input, output, reference;
   double multiplier = 2.0;
   double degenerateAngleDeg = 1.0;
   bool noLengthCheck = false, noConvexityCheck = false;
@@ -37,11 +39,25 @@ bool sameFile(const std::string &a, const std::string &b) {
   return std::filesystem::exists(b, ec) && std::filesystem::equivalent(a, b, ec);
 }
 
+nlohmann::json distanceJson(const es::DistanceReport &d) {
+  return {{"max", d.max()},           {"mean", d.mean()},
+          {"rms", d.rms()},           {"max_percent", d.maxPercent()},
+          {"mean_percent", d.meanPercent()}, {"rms_percent", d.rmsPercent()},
+          {"reference_diagonal", d.referenceDiagonal}};
+}
+
 int run(const CliOptions &cli) {
   if (sameFile(cli.input, cli.output))
     throw std::runtime_error("output would overwrite the input file " + cli.input);
   es::Mesh m;
   es::io::loadMesh(cli.input, m);
+  // With --reference, keep the input to measure both sides against the exact shape.
+  es::Mesh reference, original;
+  if (!cli.reference.empty()) {
+    es::io::loadMesh(cli.reference, reference);
+    if (reference.FN() == 0) throw std::runtime_error(cli.reference + ": reference has no faces");
+    vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(original, m);
+  }
 
   es::SharpenOptions opt;
   opt.smoothMultiplier = cli.multiplier;
@@ -63,14 +79,30 @@ int run(const CliOptions &cli) {
   if (cli.detectOnly) saveMask |= mask::Mask::IOM_FACEFLAGS;
   es::io::saveMesh(m, cli.output, saveMask);
 
+  std::optional<es::DistanceReport> before, after;
+  if (!cli.reference.empty()) {
+    before = es::measureDistance(original, reference);
+    after = es::measureDistance(m, reference);
+  }
   if (cli.json) {
     nlohmann::json j = es::reportToJson(report);
     j["seconds"] = seconds;
-    j["input"] = cli.input;
-    j["output"] = cli.output;
+    j["input_file"] = cli.input;
+    j["output_file"] = cli.output;
+    if (before) j["distance"] = {{"before", distanceJson(*before)}, {"after", distanceJson(*after)}};
     std::cout << j.dump(2) << "\n";
   } else if (!cli.quiet) {
     std::cout << es::formatReport(report) << "time: " << seconds << " s\n";
+    if (before) {
+      std::printf("distance to %s (%% of its bbox diagonal %.4g):\n", cli.reference.c_str(),
+                  before->referenceDiagonal);
+      std::printf("  before: max %.4f%%  mean %.5f%%  RMS %.5f%%\n", before->maxPercent(),
+                  before->meanPercent(), before->rmsPercent());
+      std::printf("  after:  max %.4f%%  mean %.5f%%  RMS %.5f%%\n", after->maxPercent(),
+                  after->meanPercent(), after->rmsPercent());
+      std::printf("  reduction: max x%.2f, RMS x%.2f\n", before->max() / after->max(),
+                  before->rms() / after->rms());
+    }
   }
   return 0;
 }
@@ -100,6 +132,9 @@ int main(int argc, char **argv) {
   app.add_flag("--detect-only", cli.detectOnly,
                "only detect: colour and select chamfer/corner faces, no geometry change");
   app.add_flag("--json", cli.json, "print the report as JSON");
+  app.add_option("--reference", cli.reference,
+                 "exact shape: print the two-sided (Metro) distance to it before and after")
+      ->check(CLI::ExistingFile);
   app.add_flag("-q,--quiet", cli.quiet, "print nothing on success");
   CLI11_PARSE(app, argc, argv);
   try {
