@@ -35,11 +35,11 @@ std::string topologyProblem(es::Mesh &m) {
     for (int k = 0; k < 3; ++k)
       if (!std::isfinite(v.P()[k])) return "non-finite coordinate";
   vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m);
-  if (vcg::tri::Clean<es::Mesh>::CountNonManifoldEdgeFF(m) > 0) return "non-manifold edge";
-  if (vcg::tri::Clean<es::Mesh>::CountNonManifoldVertexFF(m, false) > 0)
-    return "non-manifold vertex";
   int edges = 0, boundary = 0, nonManifold = 0;
   vcg::tri::Clean<es::Mesh>::CountEdgeNum(m, edges, boundary, nonManifold);
+  if (nonManifold > 0) return "non-manifold edge";
+  if (vcg::tri::Clean<es::Mesh>::CountNonManifoldVertexFF(m, false) > 0)
+    return "non-manifold vertex";
   if (boundary > 0) return "boundary edges in a closed input";
   if (!vcg::tri::Clean<es::Mesh>::IsCoherentlyOrientedMesh(m)) return "inconsistent orientation";
   return "";

@@ -34,8 +34,16 @@ std::string findInputProblem(MeshType &m) {
       return "face " + std::to_string(i) + " repeats a vertex (remove duplicated vertices/faces first)";
   }
   vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
-  if (int n = vcg::tri::Clean<MeshType>::CountNonManifoldEdgeFF(m, false))
-    return "mesh has " + std::to_string(n) + " non-manifold edges";
+  // An edge is manifold when its FF ring has at most two faces. (Not
+  // Clean::CountNonManifoldEdgeFF: it takes face bit flags it never returns,
+  // which inside MeshLab are shared with every other filter.)
+  std::size_t nonManifoldFaceEdges = 0, firstFace = 0;
+  for (std::size_t i = 0; i < m.face.size(); ++i)
+    for (int j = 0; j < 3; ++j)
+      if (!vcg::face::IsManifold(m.face[i], j) && nonManifoldFaceEdges++ == 0) firstFace = i;
+  if (nonManifoldFaceEdges > 0)
+    return "mesh has non-manifold edges (three or more faces on an edge, e.g. at face " +
+           std::to_string(firstFace) + ")";
   if (int n = vcg::tri::Clean<MeshType>::CountNonManifoldVertexFF(m, false, false))
     return "mesh has " + std::to_string(n) + " non-manifold vertices";
   if (!vcg::tri::Clean<MeshType>::IsCoherentlyOrientedMesh(m))

@@ -5,9 +5,10 @@
 // SurfaceSampling; a fixed seed makes the result deterministic.
 #pragma once
 
+#include <vcg/complex/complex.h>
+// (vcglib's algorithm headers need complex.h first)
 #include <vcg/complex/algorithms/point_sampling.h>
 #include <vcg/complex/algorithms/update/bounding.h>
-#include <vcg/complex/complex.h>
 
 #include <algorithm>
 #include <cmath>

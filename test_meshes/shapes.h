@@ -1,0 +1,635 @@
+// Test solids with sharp features and exact ground truth, and their marching-cubes
+// (chamfered) versions: the inputs and the references of the edge-sharpening tests.
+//
+// Every shape has
+//  - an exact signed Euclidean distance function (negative inside);
+//  - an exact volume and surface area;
+//  - a reference triangle mesh: polyhedra are triangulated exactly (the mesh *is* the
+//    surface); curved surfaces are tessellated with a maximum distance from the exact
+//    surface below 1e-4 of the bounding-box diagonal (`Shape::referenceMaxError` gives it);
+//  - a tight bounding box, sizes 1-2 units.
+// `marchingCubes()` samples the distance function on a regular grid whose planes are
+// offset from every feature, so sharp edges and corners come out chamfered, as in
+// real scanned-and-remeshed data.
+#pragma once
+
+#include <vcg/complex/complex.h>
+// (vcglib's algorithm headers need complex.h first)
+#include <vcg/complex/algorithms/clean.h>
+// TrivialWalker::Exist leaves an index unset on a path that never runs.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <vcg/complex/algorithms/create/marching_cubes.h>
+#include <vcg/complex/algorithms/create/mc_trivial_walker.h>
+#pragma GCC diagnostic pop
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <vcg/complex/algorithms/update/topology.h>
+#include <vcg/space/distance3.h>
+#include <vcg/space/triangle3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace edge_sharpener {
+namespace test_meshes {
+
+using Point2d = vcg::Point2d;
+using Point3d = vcg::Point3d;
+
+/// An indexed triangle mesh in double precision, independent of any vcg mesh type.
+struct TriangleList {
+  std::vector<Point3d> vertices;
+  std::vector<std::array<int, 3>> triangles;
+
+  int addVertex(const Point3d& p) {
+    vertices.push_back(p);
+    return static_cast<int>(vertices.size()) - 1;
+  }
+  void addTriangle(int a, int b, int c) { triangles.push_back({a, b, c}); }
+  /// Planar convex quad a-b-c-d (counter-clockwise seen from outside).
+  void addQuad(int a, int b, int c, int d) {
+    addTriangle(a, b, c);
+    addTriangle(a, c, d);
+  }
+};
+
+struct Shape {
+  std::string name;
+  std::string description;
+  /// Tight bounding box of the exact solid.
+  vcg::Box3d bbox;
+  /// Exact volume and surface area of the solid (not of its tessellation).
+  double volume = 0;
+  double area = 0;
+  /// False only for shapes without creases or corners (the sphere): the sharpener must
+  /// leave their marching-cubes meshes alone.
+  bool hasSharpFeatures = true;
+  /// Largest distance between the reference mesh and the exact surface: 0 for polyhedra.
+  double referenceMaxError = 0;
+  /// Exact signed Euclidean distance to the surface, negative inside.
+  std::function<double(const Point3d&)> signedDistance;
+  /// Closed, outward-oriented, 2-manifold triangulation of the surface.
+  std::function<TriangleList()> referenceTriangles;
+
+  double diagonal() const { return bbox.Diag(); }
+};
+
+namespace detail {
+
+inline double dot2(const Point2d& a, const Point2d& b) { return a.X() * b.X() + a.Y() * b.Y(); }
+
+inline double segmentDistanceSquared2d(const Point2d& p, const Point2d& a, const Point2d& b) {
+  const Point2d ab = b - a;
+  const double t = std::clamp(dot2(p - a, ab) / dot2(ab, ab), 0.0, 1.0);
+  const Point2d closest = a + ab * t;
+  return dot2(p - closest, p - closest);
+}
+
+/// Exact signed distance to a simple polygon (inside by crossing number).
+inline double polygonSignedDistance(const std::vector<Point2d>& polygon, const Point2d& p) {
+  double best = std::numeric_limits<double>::infinity();
+  bool inside = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const Point2d& a = polygon[j];
+    const Point2d& b = polygon[i];
+    best = std::min(best, segmentDistanceSquared2d(p, a, b));
+    if ((a.Y() > p.Y()) != (b.Y() > p.Y())) {
+      const double xCross = a.X() + (p.Y() - a.Y()) * (b.X() - a.X()) / (b.Y() - a.Y());
+      if (p.X() < xCross) inside = !inside;
+    }
+  }
+  return inside ? -std::sqrt(best) : std::sqrt(best);
+}
+
+/// A polygon in the xy plane extruded along z over [zMin, zMax].
+struct Prism {
+  std::vector<Point2d> outline;  // counter-clockwise, simple
+  Point2d fanCenter;             // strictly inside the polygon's kernel: caps are fans from it
+  double zMin = 0, zMax = 0;
+
+  double polygonArea() const {
+    double twiceArea = 0;
+    for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++)
+      twiceArea += outline[j].X() * outline[i].Y() - outline[i].X() * outline[j].Y();
+    return 0.5 * twiceArea;
+  }
+  double perimeter() const {
+    double length = 0;
+    for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++)
+      length += (outline[i] - outline[j]).Norm();
+    return length;
+  }
+  double height() const { return zMax - zMin; }
+
+  /// Exact for an exact 2D distance: the distance to the extrusion combines the in-plane
+  /// and the axial excess like a 2D box.
+  double signedDistance(const Point3d& p) const {
+    const double inPlane = polygonSignedDistance(outline, Point2d(p.X(), p.Y()));
+    const double axial = std::abs(p.Z() - 0.5 * (zMin + zMax)) - 0.5 * height();
+    return std::min(std::max(inPlane, axial), 0.0) +
+           std::hypot(std::max(inPlane, 0.0), std::max(axial, 0.0));
+  }
+
+  TriangleList triangles() const {
+    TriangleList mesh;
+    const int n = static_cast<int>(outline.size());
+    std::vector<int> bottom(n), top(n);
+    for (int i = 0; i < n; ++i) {
+      bottom[i] = mesh.addVertex(Point3d(outline[i].X(), outline[i].Y(), zMin));
+      top[i] = mesh.addVertex(Point3d(outline[i].X(), outline[i].Y(), zMax));
+    }
+    const int bottomCenter = mesh.addVertex(Point3d(fanCenter.X(), fanCenter.Y(), zMin));
+    const int topCenter = mesh.addVertex(Point3d(fanCenter.X(), fanCenter.Y(), zMax));
+    for (int i = 0; i < n; ++i) {
+      const int next = (i + 1) % n;
+      mesh.addTriangle(topCenter, top[i], top[next]);
+      mesh.addTriangle(bottomCenter, bottom[next], bottom[i]);
+      mesh.addQuad(bottom[i], bottom[next], top[next], top[i]);
+    }
+    return mesh;
+  }
+
+  vcg::Box3d bbox() const {
+    vcg::Box3d box;
+    for (const Point2d& q : outline) {
+      box.Add(Point3d(q.X(), q.Y(), zMin));
+      box.Add(Point3d(q.X(), q.Y(), zMax));
+    }
+    return box;
+  }
+};
+
+inline Shape prismShape(const std::string& name, const std::string& description,
+                        const Prism& prism) {
+  Shape shape;
+  shape.name = name;
+  shape.description = description;
+  shape.bbox = prism.bbox();
+  shape.volume = prism.polygonArea() * prism.height();
+  shape.area = 2 * prism.polygonArea() + prism.perimeter() * prism.height();
+  shape.signedDistance = [prism](const Point3d& p) { return prism.signedDistance(p); };
+  shape.referenceTriangles = [prism]() { return prism.triangles(); };
+  return shape;
+}
+
+/// Convex polyhedron given by its exact triangulation: inside, the distance is the one to
+/// the nearest face plane; outside, the one to the nearest triangle. Both are exact.
+inline Shape convexPolyhedronShape(const std::string& name, const std::string& description,
+                                   const TriangleList& mesh, double volume, double area) {
+  std::vector<vcg::Triangle3<double>> triangles;
+  std::vector<vcg::Plane3d> planes;
+  for (const auto& t : mesh.triangles) {
+    triangles.emplace_back(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+    vcg::Plane3d plane;
+    // Plane3::Init orients the normal as (p2-p0)^(p1-p0): swap to get the outward one.
+    plane.Init(mesh.vertices[t[0]], mesh.vertices[t[2]], mesh.vertices[t[1]]);
+    planes.push_back(plane);
+  }
+  Shape shape;
+  shape.name = name;
+  shape.description = description;
+  for (const Point3d& v : mesh.vertices) shape.bbox.Add(v);
+  shape.volume = volume;
+  shape.area = area;
+  shape.signedDistance = [triangles, planes](const Point3d& p) {
+    double maxPlaneDistance = -std::numeric_limits<double>::infinity();
+    for (const vcg::Plane3d& plane : planes)
+      maxPlaneDistance = std::max(maxPlaneDistance, vcg::SignedDistancePlanePoint(plane, p));
+    if (maxPlaneDistance <= 0) return maxPlaneDistance;
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& triangle : triangles) {
+      double distance;
+      Point3d closest;
+      vcg::TrianglePointDistance(triangle, p, distance, closest);
+      best = std::min(best, distance);
+    }
+    return best;
+  };
+  shape.referenceTriangles = [mesh]() { return mesh; };
+  return shape;
+}
+
+inline Shape cube() {
+  Prism prism;
+  prism.outline = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
+  prism.fanCenter = Point2d(0, 0);
+  prism.zMin = -0.5;
+  prism.zMax = 0.5;
+  return prismShape("cube", "unit cube centred at the origin: 12 convex edges, 8 corners", prism);
+}
+
+inline Shape lblock() {
+  Prism prism;
+  prism.outline = {{-0.8, -0.8}, {0.8, -0.8}, {0.8, 0.0}, {0.0, 0.0}, {0.0, 0.8}, {-0.8, 0.8}};
+  prism.fanCenter = Point2d(-0.4, -0.4);  // sees the whole L
+  prism.zMin = -0.4;
+  prism.zMax = 0.4;
+  return prismShape("lblock",
+                    "L-shaped block 1.6 x 1.6 x 0.8: one concave edge along z at the inner "
+                    "corner, convex edges, corners mixing both",
+                    prism);
+}
+
+inline Shape wedge() {
+  const double length = 1.6;
+  const double acuteAngle = 35.0 * M_PI / 180.0;
+  const double height = length * std::tan(acuteAngle);
+  const Point2d shift(length / 2, height / 2);
+  Prism prism;
+  prism.outline = {Point2d(0, 0) - shift, Point2d(length, 0) - shift, Point2d(0, height) - shift};
+  prism.fanCenter = Point2d(length / 3, height / 3) - shift;
+  prism.zMin = -0.4;
+  prism.zMax = 0.4;
+  return prismShape("wedge",
+                    "right triangular prism: dihedral angles 35 (acute edge), 55 and 90 "
+                    "degrees along z, right-angled edges around the caps",
+                    prism);
+}
+
+inline Shape crossPrism() {
+  const double w = 0.3;  // half width of the arms
+  const double e = 0.9;  // half span
+  Prism prism;
+  prism.outline = {{-w, -e}, {w, -e}, {w, -w}, {e, -w}, {e, w},   {w, w},
+                   {w, e},   {-w, e}, {-w, w}, {-e, w}, {-e, -w}, {-w, -w}};
+  prism.fanCenter = Point2d(0, 0);
+  prism.zMin = -0.3;
+  prism.zMax = 0.3;
+  return prismShape("cross_prism",
+                    "plus-shaped prism 1.8 x 1.8 x 0.6: four concave edges along z, "
+                    "corners mixing concave and convex edges",
+                    prism);
+}
+
+inline Shape pyramid() {
+  const double a = 0.7;  // half side of the base
+  const double baseZ = -0.5, apexZ = 0.6;
+  TriangleList mesh;
+  const int p0 = mesh.addVertex(Point3d(-a, -a, baseZ));
+  const int p1 = mesh.addVertex(Point3d(a, -a, baseZ));
+  const int p2 = mesh.addVertex(Point3d(a, a, baseZ));
+  const int p3 = mesh.addVertex(Point3d(-a, a, baseZ));
+  const int apex = mesh.addVertex(Point3d(0, 0, apexZ));
+  mesh.addTriangle(p0, p2, p1);
+  mesh.addTriangle(p0, p3, p2);
+  mesh.addTriangle(p0, p1, apex);
+  mesh.addTriangle(p1, p2, apex);
+  mesh.addTriangle(p2, p3, apex);
+  mesh.addTriangle(p3, p0, apex);
+  const double h = apexZ - baseZ;
+  const double side = 2 * a;
+  const double slantHeight = std::hypot(h, a);
+  return convexPolyhedronShape(
+      "pyramid", "square pyramid, base 1.4, height 1.1: apex where four convex edges meet", mesh,
+      side * side * h / 3, side * side + 2 * side * slantHeight);
+}
+
+/// Box [-a,a]^2 x [-c,0] with a cylinder of radius R, height H standing on its top face.
+inline Shape cylinderBlock() {
+  const double a = 0.8, c = 0.5, R = 0.45, H = 0.5;
+  // Segments of the circles; a multiple of 8 so that the square's corners lie on the rays
+  // that also carry circle vertices.
+  const int N = 256;
+
+  auto boxDistanceSquared = [](const Point3d& p, const Point3d& lo, const Point3d& hi) {
+    double sum = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double excess = p[i] - std::clamp(p[i], lo[i], hi[i]);
+      sum += excess * excess;
+    }
+    return sum;
+  };
+  Shape shape;
+  shape.name = "cylinder_block";
+  shape.description =
+      "box 1.6 x 1.6 x 0.5 with a cylinder boss (radius 0.45, height 0.5) on top: convex "
+      "circular edge round the boss top, concave circular edge at its foot, straight "
+      "convex box edges";
+  shape.bbox = vcg::Box3d(Point3d(-a, -a, -c), Point3d(a, a, H));
+  shape.volume = 4 * a * a * c + M_PI * R * R * H;
+  shape.area = 8 * a * a + 8 * a * c + 2 * M_PI * R * H;
+  // The inscribed polygons deviate from the circles by the sagitta of one segment.
+  shape.referenceMaxError = R * (1 - std::cos(M_PI / N));
+  // The boundary is the union of the patches below, so the smallest patch distance is the
+  // exact distance to the surface.
+  shape.signedDistance = [=](const Point3d& p) {
+    const double radial = std::hypot(p.X(), p.Y());
+    double best = boxDistanceSquared(p, Point3d(-a, -a, -c), Point3d(a, a, -c));  // bottom
+    best = std::min(best, boxDistanceSquared(p, Point3d(a, -a, -c), Point3d(a, a, 0)));
+    best = std::min(best, boxDistanceSquared(p, Point3d(-a, -a, -c), Point3d(-a, a, 0)));
+    best = std::min(best, boxDistanceSquared(p, Point3d(-a, a, -c), Point3d(a, a, 0)));
+    best = std::min(best, boxDistanceSquared(p, Point3d(-a, -a, -c), Point3d(a, -a, 0)));
+    // Top of the box: the square minus the foot of the cylinder.
+    const bool inSquare = std::abs(p.X()) <= a && std::abs(p.Y()) <= a;
+    const double inPlaneSquared =
+        inSquare
+            ? (radial < R ? (R - radial) * (R - radial) : 0.0)
+            : boxDistanceSquared(Point3d(p.X(), p.Y(), 0), Point3d(-a, -a, 0), Point3d(a, a, 0));
+    best = std::min(best, inPlaneSquared + p.Z() * p.Z());
+    // Lateral surface and top disk of the cylinder.
+    const double axialExcess = p.Z() - std::clamp(p.Z(), 0.0, H);
+    best = std::min(best, (radial - R) * (radial - R) + axialExcess * axialExcess);
+    const double outsideDisk = std::max(radial - R, 0.0);
+    best = std::min(best, (p.Z() - H) * (p.Z() - H) + outsideDisk * outsideDisk);
+
+    const bool inBox = inSquare && p.Z() >= -c && p.Z() <= 0;
+    const bool inCylinder = radial <= R && p.Z() >= 0 && p.Z() <= H;
+    return (inBox || inCylinder) ? -std::sqrt(best) : std::sqrt(best);
+  };
+  shape.referenceTriangles = [=]() {
+    TriangleList mesh;
+    std::vector<int> foot(N), rim(N), squareTop(N);
+    for (int k = 0; k < N; ++k) {
+      const double phi = 2 * M_PI * k / N;
+      const double cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+      foot[k] = mesh.addVertex(Point3d(R * cosPhi, R * sinPhi, 0));
+      rim[k] = mesh.addVertex(Point3d(R * cosPhi, R * sinPhi, H));
+      // Where the ray at phi leaves the square, with the coordinate on the edge set exactly.
+      Point3d onSquare;
+      if (k % (N / 4) == N / 8) {
+        onSquare = Point3d(cosPhi > 0 ? a : -a, sinPhi > 0 ? a : -a, 0);
+      } else if (std::abs(cosPhi) > std::abs(sinPhi)) {
+        onSquare = Point3d(cosPhi > 0 ? a : -a, a * sinPhi / std::abs(cosPhi), 0);
+      } else {
+        onSquare = Point3d(a * cosPhi / std::abs(sinPhi), sinPhi > 0 ? a : -a, 0);
+      }
+      squareTop[k] = mesh.addVertex(onSquare);
+    }
+    const int rimCenter = mesh.addVertex(Point3d(0, 0, H));
+    for (int k = 0; k < N; ++k) {
+      const int next = (k + 1) % N;
+      mesh.addTriangle(rimCenter, rim[k], rim[next]);
+      mesh.addQuad(foot[k], foot[next], rim[next], rim[k]);
+      mesh.addQuad(foot[k], squareTop[k], squareTop[next], foot[next]);
+    }
+    // Walls: wall w spans the rays k0..k1 between two corners; each is a convex polygon
+    // (two bottom corners, then the top points backwards) triangulated as a fan.
+    std::array<int, 4> bottomCorner;
+    for (int q = 0; q < 4; ++q) {
+      const Point3d& top = mesh.vertices[squareTop[(2 * q + 1) * N / 8]];
+      bottomCorner[q] = mesh.addVertex(Point3d(top.X(), top.Y(), -c));
+    }
+    for (int w = 0; w < 4; ++w) {
+      const int k0 = (2 * w - 1) * N / 8;  // may be negative: indices are taken mod N
+      const int k1 = (2 * w + 1) * N / 8;
+      const int bottomStart = bottomCorner[(w + 3) % 4];
+      const int bottomEnd = bottomCorner[w];
+      mesh.addTriangle(bottomStart, bottomEnd, squareTop[k1 % N]);
+      for (int k = k1; k > k0; --k)
+        mesh.addTriangle(bottomStart, squareTop[(k + N) % N], squareTop[(k - 1 + N) % N]);
+    }
+    mesh.addTriangle(bottomCorner[0], bottomCorner[2], bottomCorner[1]);
+    mesh.addTriangle(bottomCorner[0], bottomCorner[3], bottomCorner[2]);
+    return mesh;
+  };
+  return shape;
+}
+
+inline TriangleList uvSphere(double radius, int rings, int segments) {
+  TriangleList mesh;
+  const int north = mesh.addVertex(Point3d(0, 0, radius));
+  std::vector<std::vector<int>> ring(rings - 1, std::vector<int>(segments));
+  for (int i = 1; i < rings; ++i) {
+    const double theta = M_PI * i / rings;
+    for (int j = 0; j < segments; ++j) {
+      const double phi = 2 * M_PI * j / segments;
+      ring[i - 1][j] = mesh.addVertex(Point3d(radius * std::sin(theta) * std::cos(phi),
+                                              radius * std::sin(theta) * std::sin(phi),
+                                              radius * std::cos(theta)));
+    }
+  }
+  const int south = mesh.addVertex(Point3d(0, 0, -radius));
+  for (int j = 0; j < segments; ++j) {
+    const int next = (j + 1) % segments;
+    mesh.addTriangle(north, ring.front()[j], ring.front()[next]);
+    for (int i = 0; i + 1 < rings - 1; ++i)
+      mesh.addQuad(ring[i][j], ring[i + 1][j], ring[i + 1][next], ring[i][next]);
+    mesh.addTriangle(south, ring.back()[next], ring.back()[j]);
+  }
+  return mesh;
+}
+
+/// Largest distance of the flat triangles from a sphere centred at the origin: the vertices
+/// lie on the sphere, so it is the radius minus the distance of the nearest triangle point.
+inline double sphereTessellationError(const TriangleList& mesh, double radius) {
+  double worst = 0;
+  for (const auto& t : mesh.triangles) {
+    const vcg::Triangle3<double> triangle(mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                          mesh.vertices[t[2]]);
+    double distance;
+    Point3d closest;
+    vcg::TrianglePointDistance(triangle, Point3d(0, 0, 0), distance, closest);
+    worst = std::max(worst, radius - distance);
+  }
+  return worst;
+}
+
+inline Shape sphere() {
+  const double radius = 0.75;
+  // 96 x 192 keeps the tessellation error near 7.7e-5 of the diagonal (bound < 1e-4).
+  const int rings = 96, segments = 192;
+  Shape shape;
+  shape.name = "sphere";
+  shape.description = "sphere of radius 0.75: no features, the sharpener must leave it alone";
+  shape.bbox = vcg::Box3d(Point3d(-radius, -radius, -radius), Point3d(radius, radius, radius));
+  shape.volume = 4.0 / 3.0 * M_PI * radius * radius * radius;
+  shape.area = 4 * M_PI * radius * radius;
+  shape.hasSharpFeatures = false;
+  shape.referenceMaxError = sphereTessellationError(uvSphere(radius, rings, segments), radius);
+  shape.signedDistance = [radius](const Point3d& p) { return p.Norm() - radius; };
+  shape.referenceTriangles = [=]() { return uvSphere(radius, rings, segments); };
+  return shape;
+}
+
+inline Point3d rotateRodrigues(const Point3d& v, const Point3d& unitAxis, double angle) {
+  return v * std::cos(angle) + (unitAxis ^ v) * std::sin(angle) +
+         unitAxis * ((unitAxis * v) * (1 - std::cos(angle)));
+}
+
+}  // namespace detail
+
+/// The shape rotated about `axis` through the origin: its features are then oblique to
+/// any axis-aligned grid. The bounding box is the one of the rotated reference mesh grown
+/// by the reference error (tight for polyhedra).
+inline Shape rotated(const Shape& shape, const Point3d& axis, double angleRadians,
+                     const std::string& name) {
+  const Point3d unitAxis = axis / axis.Norm();
+  Shape result = shape;
+  result.name = name;
+  result.description = shape.description + " (rotated)";
+  const std::function<double(const Point3d&)> original = shape.signedDistance;
+  result.signedDistance = [original, unitAxis, angleRadians](const Point3d& p) {
+    return original(detail::rotateRodrigues(p, unitAxis, -angleRadians));
+  };
+  const std::function<TriangleList()> originalTriangles = shape.referenceTriangles;
+  result.referenceTriangles = [originalTriangles, unitAxis, angleRadians]() {
+    TriangleList mesh = originalTriangles();
+    for (Point3d& v : mesh.vertices) v = detail::rotateRodrigues(v, unitAxis, angleRadians);
+    return mesh;
+  };
+  result.bbox.SetNull();
+  for (const Point3d& v : result.referenceTriangles().vertices) result.bbox.Add(v);
+  result.bbox.Offset(shape.referenceMaxError);
+  return result;
+}
+
+/// All shapes, built once.
+inline const std::vector<Shape>& allShapes() {
+  static const std::vector<Shape> shapes = [] {
+    std::vector<Shape> list = {detail::cube(),    detail::lblock(),     detail::wedge(),
+                               detail::pyramid(), detail::crossPrism(), detail::cylinderBlock(),
+                               detail::sphere()};
+    // The L-block tilted so that no face, edge or corner is aligned with the grid.
+    list.push_back(rotated(list[1], Point3d(1, 2, 3), 0.6, "lblock_tilted"));
+    return list;
+  }();
+  return shapes;
+}
+
+inline std::vector<std::string> shapeNames() {
+  std::vector<std::string> names;
+  for (const Shape& shape : allShapes()) names.push_back(shape.name);
+  return names;
+}
+
+/// Throws std::invalid_argument for an unknown name.
+inline const Shape& shapeByName(const std::string& name) {
+  for (const Shape& shape : allShapes())
+    if (shape.name == name) return shape;
+  std::string known;
+  for (const Shape& shape : allShapes()) known += (known.empty() ? "" : ", ") + shape.name;
+  throw std::invalid_argument("unknown test shape '" + name + "' (known: " + known + ")");
+}
+
+/// Marching-cubes cell size that is `fraction` of the shape's bounding-box diagonal
+/// (0.02 gives the "2%" meshes).
+inline double cellSizeForDiagonalFraction(const Shape& shape, double fraction) {
+  return fraction * shape.diagonal();
+}
+
+/// "2" for 0.02, "0.5" for 0.005: the percent used in generated file names.
+inline std::string percentLabel(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", fraction * 100);
+  return text;
+}
+
+/// Volume enclosed by a closed mesh (divergence theorem): positive when outward-oriented.
+template <class M>
+double signedVolume(const M& mesh) {
+  double sixTimesVolume = 0;
+  for (const auto& f : mesh.face) {
+    if (f.IsD()) continue;
+    const Point3d p0 = Point3d::Construct(f.cP(0));
+    const Point3d p1 = Point3d::Construct(f.cP(1));
+    const Point3d p2 = Point3d::Construct(f.cP(2));
+    sixTimesVolume += p0 * (p1 ^ p2);
+  }
+  return sixTimesVolume / 6;
+}
+
+namespace detail {
+
+template <class M>
+void finishClosedMesh(M& mesh) {
+  vcg::tri::UpdateTopology<M>::FaceFace(mesh);
+  vcg::tri::UpdateNormal<M>::PerVertexNormalizedPerFaceNormalized(mesh);
+  vcg::tri::UpdateBounding<M>::Box(mesh);
+}
+
+using McVolume = vcg::SimpleVolume<vcg::SimpleVoxel<float>>;
+
+/// vcglib's TrivialWalker allocates its slice caches with new[] and never frees them.
+template <class M>
+class OwningWalker : public vcg::tri::TrivialWalker<M, McVolume> {
+ public:
+  OwningWalker() = default;
+  OwningWalker(const OwningWalker&) = delete;
+  OwningWalker& operator=(const OwningWalker&) = delete;
+  ~OwningWalker() {
+    if (this->_slice_dimension == 0) return;
+    delete[] this->_x_cs;
+    delete[] this->_y_cs;
+    delete[] this->_z_cs;
+    delete[] this->_x_ns;
+    delete[] this->_z_ns;
+  }
+};
+
+}  // namespace detail
+
+/// The exact reference mesh: closed, outward-oriented, 2-manifold; FF adjacency, normals
+/// and bounding box updated.
+template <class M>
+void buildReference(const Shape& shape, M& mesh) {
+  vcg::tri::RequireFFAdjacency(mesh);
+  const TriangleList triangles = shape.referenceTriangles();
+  mesh.Clear();
+  auto vertex = vcg::tri::Allocator<M>::AddVertices(mesh, triangles.vertices.size());
+  for (const Point3d& p : triangles.vertices) (vertex++)->P().Import(p);
+  auto face = vcg::tri::Allocator<M>::AddFaces(mesh, triangles.triangles.size());
+  for (const auto& t : triangles.triangles) {
+    for (int i = 0; i < 3; ++i) face->V(i) = &mesh.vert[t[i]];
+    ++face;
+  }
+  detail::finishClosedMesh(mesh);
+}
+
+/// Marching cubes of the shape's distance function on a grid of cubic cells of side
+/// `cellSize`. The grid is shifted by fixed fractions of a cell (not multiples of any
+/// feature coordinate), so grid planes cut the features at generic positions and sharp
+/// edges/corners come out chamfered. The output is deterministic, closed, outward-oriented
+/// and 2-manifold, without duplicate or unreferenced vertices or zero-area faces; FF
+/// adjacency, normals and bounding box are updated. Memory: one float per grid node.
+template <class M>
+void marchingCubes(const Shape& shape, double cellSize, M& mesh) {
+  vcg::tri::RequireFFAdjacency(mesh);
+  if (!(cellSize > 0) || !std::isfinite(cellSize))
+    throw std::invalid_argument("marchingCubes: cell size must be positive");
+  const double h = cellSize;
+  // At least one node layer outside the box on each side keeps the surface closed.
+  const int padding = 2;
+  const Point3d offset = Point3d(0.3183099, 0.2718282, 0.1414214) * h;
+  const Point3d origin = shape.bbox.min - Point3d(padding, padding, padding) * h - offset;
+  vcg::Point3i size;
+  for (int i = 0; i < 3; ++i)
+    size[i] = static_cast<int>(std::ceil((shape.bbox.max[i] - origin[i]) / h)) + padding + 2;
+  const double nodes = double(size[0]) * size[1] * size[2];
+  if (nodes > 2e9) throw std::invalid_argument("marchingCubes: cell size too small");
+
+  detail::McVolume volume;
+  const Point3d extent = Point3d(size[0], size[1], size[2]) * h;
+  volume.Init(
+      size, vcg::Box3f(vcg::Point3f::Construct(origin), vcg::Point3f::Construct(origin + extent)));
+  // A node exactly on the surface would put a vertex on several cell edges at once and
+  // leave degenerate triangles: nudge it outward by a negligible amount.
+  const float onSurfaceNudge = static_cast<float>(1e-4 * h);
+  for (int z = 0; z < size[2]; ++z)
+    for (int y = 0; y < size[1]; ++y)
+      for (int x = 0; x < size[0]; ++x) {
+        const float value = static_cast<float>(shape.signedDistance(origin + Point3d(x, y, z) * h));
+        volume.Val(x, y, z) = value == 0.0f ? onSurfaceNudge : value;
+      }
+
+  detail::OwningWalker<M> walker;
+  vcg::tri::MarchingCubes<M, detail::OwningWalker<M>> extractor(mesh, walker);
+  walker.BuildMesh(mesh, volume, extractor, 0.0f);
+
+  vcg::tri::Clean<M>::RemoveDuplicateVertex(mesh);
+  vcg::tri::Clean<M>::RemoveZeroAreaFace(mesh);
+  vcg::tri::Clean<M>::RemoveUnreferencedVertex(mesh);
+  vcg::tri::Allocator<M>::CompactEveryVector(mesh);
+  if (signedVolume(mesh) < 0) vcg::tri::Clean<M>::FlipMesh(mesh);
+  detail::finishClosedMesh(mesh);
+}
+
+}  // namespace test_meshes
+}  // namespace edge_sharpener
