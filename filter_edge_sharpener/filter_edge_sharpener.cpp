@@ -1,0 +1,250 @@
+// MeshLab adapter of Edge-Sharpener. Everything a filter needs is one row of
+// the table below (name, description, parameters, core entry point); the
+// MeshFilterInterface methods only look rows up, so there is no switch.
+#include "filter_edge_sharpener.h"
+
+#include <edge_sharpener/edge_sharpener.h>
+#include <vcg/complex/algorithms/update/selection.h>
+#include <vcg/complex/allocate.h>
+
+#include <cmath>
+#include <exception>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace es = edge_sharpener;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// ---------------------------------------------------------------------------
+// Parameters: each MeshLab parameter is declared once, next to the
+// SharpenOptions field it fills. Its name is part of the .mlx interface. A new
+// option (e.g. a RichEnum "method" for SharpenOptions::method) is one more
+// OptionParam here plus its address in the `params` list of the filters below.
+
+struct OptionParam {
+  void (*add)(RichParameterList &par, const es::SharpenOptions &defaults);
+  void (*read)(const RichParameterList &par, es::SharpenOptions &opt);
+};
+
+const OptionParam kSmoothMultiplier{
+    [](RichParameterList &par, const es::SharpenOptions &d) {
+      par.addParam(RichFloat(
+          "smoothMultiplier", float(d.smoothMultiplier), "Smooth-edge multiplier",
+          "An edge is smooth when the angle between the normals of its two faces is below this "
+          "multiple of the mean of that angle over the whole mesh (paper: 2). Smaller values "
+          "find fewer smooth regions; larger values may take curved chamfers for smooth "
+          "surface."));
+    },
+    [](const RichParameterList &par, es::SharpenOptions &o) {
+      o.smoothMultiplier = par.getFloat("smoothMultiplier");
+    }};
+
+const OptionParam kEdgeLengthCheck{
+    [](RichParameterList &par, const es::SharpenOptions &d) {
+      par.addParam(RichBool("edgeLengthCheck", d.edgeLengthCheck, "Edge-length check",
+                            "Leave an inserted vertex in the middle of its chamfer edge or corner "
+                            "triangle when moving it would create an edge longer than the "
+                            "longest edge of the input (paper, Figure 7). Keep it on: without "
+                            "it, nearly parallel planes can send vertices far away."));
+    },
+    [](const RichParameterList &par, es::SharpenOptions &o) {
+      o.edgeLengthCheck = par.getBool("edgeLengthCheck");
+    }};
+
+const OptionParam kColorize{
+    [](RichParameterList &par, const es::SharpenOptions &d) {
+      par.addParam(RichBool("colorize", d.colorize, "Colorize",
+                            "Paint the labels into per-face colour (smooth regions red, chamfer "
+                            "triangles blue, corner triangles green, others grey) and per-vertex "
+                            "colour (inserted vertices: moved yellow, kept at the midpoint by a "
+                            "fallback in another colour)."));
+    },
+    [](const RichParameterList &par, es::SharpenOptions &o) {
+      o.colorize = par.getBool("colorize");
+    }};
+
+const OptionParam kDegenerateAngle{
+    [](RichParameterList &par, const es::SharpenOptions &d) {
+      par.addParam(RichFloat("degenerateAngleDeg", float(d.degenerateAngleRad * 180.0 / kPi),
+                             "Degenerate angle (deg)",
+                             "After sharpening, new triangles with an angle below this many "
+                             "degrees are removed (paper: 1 degree)."));
+    },
+    [](const RichParameterList &par, es::SharpenOptions &o) {
+      o.degenerateAngleRad = par.getFloat("degenerateAngleDeg") * kPi / 180.0;
+    }};
+
+// ---------------------------------------------------------------------------
+// Filters.
+
+using CoreCall = es::SharpenReport (*)(CMeshO &, const es::SharpenOptions &);
+
+struct FilterSpec {
+  const char *name;
+  const char *info;  ///< HTML, without the bibliography
+  std::vector<const OptionParam *> params;
+  CoreCall run;
+  bool alwaysColorize;  ///< paints colours whatever the parameters say
+  int postCondition;
+};
+
+const char *const kCitation =
+    "<br><br>See:<br>"
+    "<i>Marco Attene, Bianca Falcidieno, Jarek Rossignac, Michela Spagnuolo</i><br>"
+    "<b>\"Edge-Sharpener: Recovering sharp features in triangulations of non-adaptively "
+    "re-meshed surfaces\"</b><br>"
+    "Eurographics Symposium on Geometry Processing (SGP), 2003.";
+
+const std::vector<FilterSpec> &filterTable() {
+  static const std::vector<FilterSpec> table{
+      // FP_SHARPEN
+      {"Edge-Sharpener: Sharpen Chamfered Edges",
+       "Restores the sharp edges and corners that a feature-insensitive, uniform re-meshing "
+       "(marching cubes, uniform mesh resampling, regular remeshing) has cut into chamfers.<br>"
+       "An edge is <i>smooth</i> when the angle between its face normals is below the "
+       "multiplier times the mean of that angle over the mesh. Six filters grow smooth regions "
+       "from the vertices whose edges are all smooth and mark as <i>chamfer edges</i> the "
+       "edges joining two region-boundary vertices, and as <i>corner triangles</i> those with "
+       "three chamfer edges. A new vertex is inserted on each chamfer edge and inside each "
+       "corner triangle (chamfer triangles are split in 2, 3 or a fan of 6) and moved onto "
+       "the intersection of the planes that extrapolate the adjacent smooth regions. "
+       "Original vertices never move. Triangles left with an angle below the degenerate "
+       "angle are removed.<br>"
+       "Needs a two-manifold triangle mesh (point clouds and non-manifold meshes are "
+       "refused and left untouched). The report of every stage is written to the log.",
+       {&kSmoothMultiplier, &kEdgeLengthCheck, &kColorize, &kDegenerateAngle},
+       &es::sharpen<CMeshO>,
+       false,
+       MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |
+           MeshModel::MM_FACECOLOR | MeshModel::MM_FACEFLAGSELECT},
+      // FP_DETECT
+      {"Edge-Sharpener: Detect Chamfers",
+       "Runs the detection stages of Edge-Sharpener only (the smooth-edge test and the six "
+       "filters of the paper), without changing the geometry: paints the labels into "
+       "per-face colour (smooth regions red, chamfer triangles blue, corner triangles green, "
+       "others grey) and selects the chamfer and corner triangles, i.e. the faces that "
+       "<i>Sharpen Chamfered Edges</i> would subdivide.<br>"
+       "Useful to tune the smooth-edge multiplier before sharpening.",
+       {&kSmoothMultiplier},
+       &es::detectChamfers<CMeshO>,
+       true,
+       MeshModel::MM_VERTCOLOR | MeshModel::MM_FACECOLOR | MeshModel::MM_FACEFLAGSELECT},
+  };
+  return table;
+}
+
+const FilterSpec &spec(int id) {
+  return filterTable().at(std::size_t(id));
+}
+
+es::SharpenOptions readOptions(const FilterSpec &f, const RichParameterList &par) {
+  es::SharpenOptions opt;
+  for (const OptionParam *p : f.params) p->read(par, opt);
+  if (f.alwaysColorize) opt.colorize = true;
+  return opt;
+}
+
+/// The core's preconditions: compact vectors and face-face adjacency.
+void prepareTopology(MeshModel &mm) {
+  vcg::tri::Allocator<CMeshO>::CompactEveryVector(mm.cm);
+  mm.updateDataMask(MeshModel::MM_FACEFACETOPO);  // enables and computes FF
+}
+
+/// Called only once the input passed the check, so that a refused mesh does
+/// not gain colour layers.
+void enableOutputAttributes(MeshModel &mm, const es::SharpenOptions &opt) {
+  if (opt.colorize) mm.updateDataMask(MeshModel::MM_FACECOLOR | MeshModel::MM_VERTCOLOR);
+}
+
+std::vector<std::string> lines(const std::string &text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) out.push_back(line);
+  return out;
+}
+
+}  // namespace
+
+FilterEdgeSharpenerPlugin::FilterEdgeSharpenerPlugin() {
+  for (int id = 0; id < int(filterTable().size()); ++id) {
+    typeList << id;
+    actionList << new QAction(filterName(id), this);
+  }
+}
+
+QString FilterEdgeSharpenerPlugin::pluginName() const {
+  return "FilterEdgeSharpener";
+}
+
+QString FilterEdgeSharpenerPlugin::filterName(FilterIDType id) const {
+  return spec(id).name;
+}
+
+QString FilterEdgeSharpenerPlugin::filterInfo(FilterIDType id) const {
+  return QString(spec(id).info) + kCitation;
+}
+
+MeshFilterInterface::FilterClass FilterEdgeSharpenerPlugin::getClass(QAction *) {
+  return MeshFilterInterface::Smoothing;
+}
+
+MeshFilterInterface::FILTER_ARITY FilterEdgeSharpenerPlugin::filterArity(QAction *) const {
+  return SINGLE_MESH;
+}
+
+int FilterEdgeSharpenerPlugin::getPreConditions(QAction *) const {
+  return MeshModel::MM_FACENUMBER;
+}
+
+int FilterEdgeSharpenerPlugin::postCondition(QAction *action) const {
+  return spec(ID(action)).postCondition;
+}
+
+void FilterEdgeSharpenerPlugin::initParameterSet(QAction *action, MeshModel &,
+                                                 RichParameterList &par) {
+  const es::SharpenOptions defaults;
+  for (const OptionParam *p : spec(ID(action)).params) p->add(par, defaults);
+}
+
+bool FilterEdgeSharpenerPlugin::applyFilter(QAction *action, MeshDocument &md,
+                                            const RichParameterList &par, vcg::CallBackPos *cb) {
+  const FilterSpec &f = spec(ID(action));
+  MeshModel &mm = *md.mm();
+  es::SharpenOptions opt = readOptions(f, par);
+  opt.progress = cb;  // the core reports (percent, stage) straight to MeshLab
+
+  prepareTopology(mm);
+  const std::string problem = es::findInputProblem(mm.cm);
+  if (!problem.empty()) return refuse("Edge-Sharpener cannot process this mesh: " + problem);
+  enableOutputAttributes(mm, opt);
+
+  es::SharpenReport report;
+  try {
+    report = f.run(mm.cm, opt);
+  } catch (const es::InputError &e) {  // bad parameter values; thrown before any change
+    return refuse(std::string("Edge-Sharpener cannot run: ") + e.what());
+  } catch (const std::exception &e) {
+    return refuse(std::string("Edge-Sharpener failed: ") + e.what());
+  }
+
+  mm.UpdateBoxAndNormals();
+  mm.cm.svn = int(vcg::tri::UpdateSelection<CMeshO>::VertexCount(mm.cm));
+  mm.cm.sfn = int(vcg::tri::UpdateSelection<CMeshO>::FaceCount(mm.cm));
+
+  Log(std::string(f.name));
+  for (const std::string &line : lines(es::formatReport(report))) Log("  " + line);
+  return true;
+}
+
+bool FilterEdgeSharpenerPlugin::refuse(const std::string &why) {
+  errorMessage = QString::fromStdString(why);  // shown by the GUI
+  Log(GLLogStream::WARNING, why);              // meshlabserver only prints the log
+  return false;
+}
+
+MESHLAB_PLUGIN_NAME_EXPORTER(FilterEdgeSharpenerPlugin)

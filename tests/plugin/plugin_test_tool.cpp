@@ -1,0 +1,252 @@
+// Helper of the MeshLab plugin tests (tests/plugin/*.sh): makes small input
+// meshes and inspects/compares the PLY files that meshlabserver and the CLI
+// write. Exit status 0 = OK, 1 = check failed, 2 = usage or I/O error.
+//
+//   plugin_test_tool make-lblock OUT.ply       sharp L-shaped block, rotated off the axes
+//   plugin_test_tool make-pointcloud OUT.ply   vertices only
+//   plugin_test_tool make-nonmanifold OUT.ply  three triangles on one edge
+//   plugin_test_tool info IN.ply               counts, colours, selection (key=value lines)
+//   plugin_test_tool compare A.ply B.ply [--rel-tol T] [--colors]
+//       same vertex and face count, same positions within T x bbox diagonal (default
+//       1e-5), same faces; with --colors also the same per-face colours.
+#include <edge_sharpener/mesh_types.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/color.h>
+#include <vcg/complex/algorithms/update/flag.h>
+#include <wrap/io_trimesh/export_ply.h>
+#include <wrap/io_trimesh/import_ply.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+using Mesh = edge_sharpener::Mesh;
+using Coord = Mesh::CoordType;
+
+namespace {
+
+struct Loaded {
+  Mesh m;
+  int mask = 0;
+};
+
+bool load(const std::string &path, Loaded &out) {
+  int err = vcg::tri::io::ImporterPLY<Mesh>::Open(out.m, path.c_str(), out.mask);
+  if (err != 0 && vcg::tri::io::ImporterPLY<Mesh>::ErrorCritical(err)) {
+    std::cerr << path << ": " << vcg::tri::io::ImporterPLY<Mesh>::ErrorMsg(err) << "\n";
+    return false;
+  }
+  vcg::tri::UpdateBounding<Mesh>::Box(out.m);
+  return true;
+}
+
+bool save(Mesh &m, const std::string &path) {
+  if (vcg::tri::io::ExporterPLY<Mesh>::Save(m, path.c_str(), false) != 0) {
+    std::cerr << "cannot write " << path << "\n";
+    return false;
+  }
+  return true;
+}
+
+void fromArrays(Mesh &m, const std::vector<Coord> &pts,
+                const std::vector<std::array<int, 3>> &tris) {
+  auto vi = vcg::tri::Allocator<Mesh>::AddVertices(m, pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) vi[i].P() = pts[i];
+  for (const auto &t : tris)
+    vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[t[0]], &m.vert[t[1]], &m.vert[t[2]]);
+}
+
+/// Rotation off every axis, so that a marching-cubes grid cuts all its edges.
+Coord rotate(Coord p) {
+  auto rot = [](double a, double &x, double &y) {
+    const double c = std::cos(a), s = std::sin(a), nx = c * x - s * y;
+    y = s * x + c * y;
+    x = nx;
+  };
+  double x = p[0], y = p[1], z = p[2];
+  rot(0.37, x, y);  // about z
+  rot(0.51, y, z);  // about x
+  rot(0.23, z, x);  // about y
+  return Coord(float(x), float(y), float(z));
+}
+
+/// L-shaped prism: 4 convex edges per cap, one concave edge, 3-edge corners.
+int makeLBlock(const std::string &out) {
+  const double l[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  std::vector<Coord> pts;
+  for (int z = 0; z < 2; ++z)
+    for (const auto &q : l)
+      pts.push_back(rotate(Coord(float(0.5 * q[0] - 0.5), float(0.5 * q[1] - 0.5), 0.5f * z)));
+  std::vector<std::array<int, 3>> tris;
+  for (int i = 1; i < 5; ++i) {
+    tris.push_back({0, i + 1, i});      // bottom (z = 0), facing -z
+    tris.push_back({6, 6 + i, 7 + i});  // top, facing +z
+  }
+  for (int i = 0; i < 6; ++i) {
+    const int j = (i + 1) % 6;
+    tris.push_back({i, j, 6 + j});
+    tris.push_back({i, 6 + j, 6 + i});
+  }
+  Mesh m;
+  fromArrays(m, pts, tris);
+  return save(m, out) ? 0 : 2;
+}
+
+int makePointCloud(const std::string &out) {
+  std::vector<Coord> pts;
+  for (int i = 0; i < 64; ++i)
+    pts.push_back(Coord(float(i % 4), float((i / 4) % 4), float(i / 16)));
+  Mesh m;
+  fromArrays(m, pts, {});
+  return save(m, out) ? 0 : 2;
+}
+
+int makeNonManifold(const std::string &out) {
+  // A closed tetrahedron plus a fin on one of its edges: edge 0-1 has three faces.
+  std::vector<Coord> pts{Coord(0, 0, 0), Coord(1, 0, 0), Coord(0, 1, 0), Coord(0, 0, 1),
+                         Coord(0.5f, -1, 0.5f)};
+  Mesh m;
+  fromArrays(m, pts, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 1, 4}});
+  return save(m, out) ? 0 : 2;
+}
+
+int info(const std::string &path) {
+  Loaded a;
+  if (!load(path, a)) return 2;
+  std::size_t selected = 0;
+  std::set<unsigned> faceColours;
+  for (const auto &f : a.m.face) {
+    if (f.IsS()) ++selected;
+    if (a.mask & vcg::tri::io::Mask::IOM_FACECOLOR)
+      faceColours.insert(f.cC()[0] << 16 | f.cC()[1] << 8 | f.cC()[2]);
+  }
+  std::cout << "vertices=" << a.m.vn << "\nfaces=" << a.m.fn
+            << "\nvertex_color=" << bool(a.mask & vcg::tri::io::Mask::IOM_VERTCOLOR)
+            << "\nface_color=" << bool(a.mask & vcg::tri::io::Mask::IOM_FACECOLOR)
+            << "\nface_flags=" << bool(a.mask & vcg::tri::io::Mask::IOM_FACEFLAGS)
+            << "\nselected_faces=" << selected << "\nface_colors=" << faceColours.size()
+            << "\nbbox_diag=" << a.m.bbox.Diag() << "\n";
+  return 0;
+}
+
+/// Index of each vertex of `a` in `b` (positions within tol), or an empty
+/// vector when some vertex has no partner. Order-independent fallback for
+/// when the two writers do not order vertices alike.
+std::vector<int> matchVertices(const Mesh &a, const Mesh &b, double tol) {
+  std::multimap<double, int> byX;
+  for (int i = 0; i < int(b.vert.size()); ++i) byX.emplace(b.vert[i].P()[0], i);
+  std::vector<int> map(a.vert.size(), -1);
+  std::vector<bool> used(b.vert.size(), false);
+  for (int i = 0; i < int(a.vert.size()); ++i) {
+    const Coord p = a.vert[i].P();
+    double best = tol;
+    for (auto it = byX.lower_bound(p[0] - tol); it != byX.end() && it->first <= p[0] + tol; ++it) {
+      const double d = vcg::Distance(p, b.vert[it->second].P());
+      if (!used[it->second] && d <= best) best = d, map[i] = it->second;
+    }
+    if (map[i] < 0) return {};
+    used[map[i]] = true;
+  }
+  return map;
+}
+
+using FaceKey = std::array<int, 3>;
+FaceKey key(const Mesh &m, const Mesh::FaceType &f, const std::vector<int> &vmap) {
+  FaceKey k;
+  for (int j = 0; j < 3; ++j) {
+    int vi = int(vcg::tri::Index(m, f.cV(j)));
+    k[j] = vmap.empty() ? vi : vmap[vi];
+  }
+  std::rotate(k.begin(), std::min_element(k.begin(), k.end()), k.end());  // keeps orientation
+  return k;
+}
+
+int compare(const std::string &pa, const std::string &pb, double relTol, bool colours) {
+  Loaded a, b;
+  if (!load(pa, a) || !load(pb, b)) return 2;
+  std::cout << "A " << pa << ": " << a.m.vn << " vertices, " << a.m.fn << " faces\n"
+            << "B " << pb << ": " << b.m.vn << " vertices, " << b.m.fn << " faces\n";
+  if (a.m.vn != b.m.vn || a.m.fn != b.m.fn) {
+    std::cout << "FAIL: different vertex or face count\n";
+    return 1;
+  }
+  const double tol = relTol * std::max(double(a.m.bbox.Diag()), 1e-30);
+  double maxDist = 0;
+  for (std::size_t i = 0; i < a.m.vert.size(); ++i)
+    maxDist = std::max(maxDist, double(vcg::Distance(a.m.vert[i].P(), b.m.vert[i].P())));
+  std::vector<int> vmap;  // empty: identity
+  if (maxDist > tol) {
+    std::cout << "vertex order differs (max same-index distance " << maxDist
+              << "); matching by position\n";
+    vmap = matchVertices(a.m, b.m, tol);
+    if (vmap.empty()) {
+      std::cout << "FAIL: some vertex of A has no vertex of B within " << tol << "\n";
+      return 1;
+    }
+    maxDist = 0;
+    for (std::size_t i = 0; i < vmap.size(); ++i)
+      maxDist = std::max(maxDist, double(vcg::Distance(a.m.vert[i].P(), b.m.vert[vmap[i]].P())));
+  }
+  std::map<FaceKey, vcg::Color4b> facesB;
+  for (const auto &f : b.m.face) facesB[key(b.m, f, {})] = f.cC();
+  std::size_t missing = 0, colourDiff = 0;
+  for (const auto &f : a.m.face) {
+    auto it = facesB.find(key(a.m, f, vmap));
+    if (it == facesB.end())
+      ++missing;
+    else if (colours && it->second != f.cC())
+      ++colourDiff;
+  }
+  std::cout << "max vertex distance " << maxDist << " (tolerance " << tol
+            << "), faces of A not in B " << missing;
+  if (colours) std::cout << ", faces with different colour " << colourDiff;
+  std::cout << "\n";
+  if (colours && !((a.mask & b.mask) & vcg::tri::io::Mask::IOM_FACECOLOR)) {
+    std::cout << "FAIL: --colors but a file has no face colour\n";
+    return 1;
+  }
+  if (missing || colourDiff) {
+    std::cout << "FAIL\n";
+    return 1;
+  }
+  std::cout << "OK: same mesh\n";
+  return 0;
+}
+
+int usage() {
+  std::cerr << "usage: plugin_test_tool make-lblock|make-pointcloud|make-nonmanifold OUT\n"
+               "       plugin_test_tool info IN\n"
+               "       plugin_test_tool compare A B [--rel-tol T] [--colors]\n";
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.size() == 2 && args[0] == "make-lblock") return makeLBlock(args[1]);
+  if (args.size() == 2 && args[0] == "make-pointcloud") return makePointCloud(args[1]);
+  if (args.size() == 2 && args[0] == "make-nonmanifold") return makeNonManifold(args[1]);
+  if (args.size() == 2 && args[0] == "info") return info(args[1]);
+  if (args.size() >= 3 && args[0] == "compare") {
+    double tol = 1e-5;
+    bool colours = false;
+    for (std::size_t i = 3; i < args.size(); ++i) {
+      if (args[i] == "--rel-tol" && i + 1 < args.size())
+        tol = std::atof(args[++i].c_str());
+      else if (args[i] == "--colors")
+        colours = true;
+      else
+        return usage();
+    }
+    return compare(args[1], args[2], tol, colours);
+  }
+  return usage();
+}

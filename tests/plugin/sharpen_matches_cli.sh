@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# sharpen.mlx through meshlabserver gives the same mesh as the CLI with the same
+# parameters (plain, and with colours), on chamfered marching-cubes meshes.
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+[[ -n ${ES_CLI:-} && -x ${ES_CLI:-} ]] || fail "the edge-sharpener CLI is not built (ES_CLI='${ES_CLI:-}')"
+
+sed 's/name="colorize" type="RichBool" value="false"/name="colorize" type="RichBool" value="true"/' \
+  "$SCRIPTS/sharpen.mlx" >sharpen_colorize.mlx
+grep -q 'name="colorize" type="RichBool" value="true"' sharpen_colorize.mlx || fail "cannot derive sharpen_colorize.mlx"
+
+mapfile -t inputs < <(chamfered_inputs)
+for in in "${inputs[@]}"; do
+  n=$(basename "$in" .ply)
+  in_faces=$("$ES_TEST_TOOL" info "$in" | sed -n 's/^faces=//p')
+  log "$n: $in_faces faces"
+
+  run_server "$n.plugin" -i "$in" -o "$n.plugin.ply" -m vc fc ff -s "$SCRIPTS/sharpen.mlx" -l "$n.plugin.log"
+  ((rc == 0)) && [[ -f $n.plugin.ply ]] || { cat "$n.plugin.out" >&2; fail "$n: meshlabserver status $rc"; }
+  grep -q '^  subdivision: ' "$n.plugin.log" || fail "$n: no Edge-Sharpener report in the log"
+  "$ES_CLI" "$in" "$n.cli.ply" >"$n.cli.txt" 2>&1 || { cat "$n.cli.txt" >&2; fail "$n: CLI failed"; }
+  "$ES_TEST_TOOL" compare "$n.plugin.ply" "$n.cli.ply" --rel-tol 1e-5 || fail "$n: plugin and CLI differ"
+  out_faces=$("$ES_TEST_TOOL" info "$n.plugin.ply" | sed -n 's/^faces=//p')
+  ((out_faces > in_faces)) || fail "$n: nothing was sharpened ($in_faces -> $out_faces faces)"
+
+  run_server "$n.plugin_color" -i "$in" -o "$n.plugin_color.ply" -m vc fc ff -s sharpen_colorize.mlx
+  ((rc == 0)) || { cat "$n.plugin_color.out" >&2; fail "$n: meshlabserver (colorize) status $rc"; }
+  "$ES_CLI" "$in" "$n.cli_color.ply" --colorize >"$n.cli_color.txt" 2>&1 ||
+    { cat "$n.cli_color.txt" >&2; fail "$n: CLI --colorize failed"; }
+  "$ES_TEST_TOOL" info "$n.plugin_color.ply" >"$n.plugin_color.info"
+  grep -qx 'face_color=1' "$n.plugin_color.info" || fail "$n: no face colour in the PLY written with -m fc"
+  grep -qx 'vertex_color=1' "$n.plugin_color.info" || fail "$n: no vertex colour in the PLY written with -m vc"
+  colours=$(sed -n 's/^face_colors=//p' "$n.plugin_color.info")
+  ((colours >= 3)) || fail "$n: only $colours face colour(s): labels not painted"
+  "$ES_TEST_TOOL" compare "$n.plugin_color.ply" "$n.cli_color.ply" --rel-tol 1e-5 --colors ||
+    fail "$n: plugin and CLI differ with colours"
+  log "$n: plugin == CLI ($in_faces -> $out_faces faces, $colours face colours)"
+done
