@@ -24,6 +24,7 @@ namespace {
 struct CliOptions {
   std::string input, output, reference;
   double multiplier = 2.0;
+  std::string method = "paper";
   double degenerateAngleDeg = 1.0;
   bool noLengthCheck = false, noConvexityCheck = false;
   bool colorize = false, detectOnly = false, json = false, quiet = false;
@@ -61,6 +62,7 @@ int run(const CliOptions &cli) {
 
   es::SharpenOptions opt;
   opt.smoothMultiplier = cli.multiplier;
+  opt.method = cli.method == "extended" ? es::Method::Extended : es::Method::Paper;
   opt.edgeLengthCheck = !cli.noLengthCheck;
   opt.convexityCheck = !cli.noConvexityCheck;
   opt.degenerateAngleRad = cli.degenerateAngleDeg * M_PI / 180.0;
@@ -120,6 +122,10 @@ int main(int argc, char **argv) {
                  "smooth-edge threshold as a multiple of the mean normal angle")
       ->default_val(2.0)
       ->check(CLI::PositiveNumber);
+  app.add_option("--method", cli.method,
+                 "paper: the 2003 method as published; extended: feature zones of any width")
+      ->default_val("paper")
+      ->check(CLI::IsMember({"paper", "extended"}));
   app.add_flag("--no-length-check", cli.noLengthCheck,
                "allow placements that create edges longer than the input's longest");
   app.add_flag("--no-convexity-check", cli.noConvexityCheck,

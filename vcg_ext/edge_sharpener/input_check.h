@@ -1,21 +1,61 @@
 // Preconditions of Edge-Sharpener, checked before anything is modified.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include <vcg/complex/complex.h>
-#include <vcg/complex/algorithms/clean.h>
-#include <vcg/complex/algorithms/update/topology.h>
+#include <vcg/simplex/face/pos.h>
+#include <vcg/simplex/face/topology.h>
+
+#include "fast_topology.h"
 
 namespace edge_sharpener {
+
+namespace detail {
+
+/// Number of vertices whose faces do not form a single fan (the count
+/// vcg::tri::Clean::CountNonManifoldVertexFF returns on a mesh whose edges are
+/// all manifold), without touching the vertex flags. Fans are walked in parallel.
+/// \pre FF topology up to date; every edge has at most two faces.
+template <class MeshType>
+std::size_t countNonManifoldVertices(MeshType &m) {
+  using FaceType = typename MeshType::FaceType;
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  const std::size_t nv = m.vert.size();
+  if (nv == 0 || m.face.empty()) return 0;
+  const auto *v0 = &m.vert[0];
+  std::vector<std::uint32_t> incident(nv, 0), firstCorner(nv, kNone);
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    if (m.face[f].IsD()) continue;
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t v = std::size_t(m.face[f].cV(i) - v0);
+      if (incident[v]++ == 0) firstCorner[v] = std::uint32_t(3 * f + i);
+    }
+  }
+  std::int64_t count = 0;
+  const std::int64_t n = std::int64_t(nv);
+#pragma omp parallel for schedule(static, 8192) reduction(+ : count)
+  for (std::int64_t v = 0; v < n; ++v) {
+    if (firstCorner[v] == kNone) continue;
+    vcg::face::Pos<FaceType> pos(&m.face[firstCorner[v] / 3], int(firstCorner[v] % 3));
+    if (std::uint32_t(pos.NumberOfIncidentFaces()) != incident[v]) ++count;
+  }
+  return std::size_t(count);
+}
+
+}  // namespace detail
 
 /// Returns "" when `m` can be processed, else a one-line reason. Refuses:
 /// no faces (empty or point cloud), non-finite coordinates, faces that repeat
 /// a vertex, non-manifold edges or vertices, inconsistent orientation.
 /// Boundaries (open meshes) and several components are accepted.
-/// \pre m has FF adjacency and no deleted elements. Rebuilds FF topology and
-///      uses the vertex/face "visited" flags.
+/// \pre m has FF adjacency and no deleted elements. Rebuilds FF topology
+///      (fast_topology.h); leaves every flag as it was.
 template <class MeshType>
 std::string findInputProblem(MeshType &m) {
   vcg::tri::RequireFFAdjacency(m);
@@ -33,21 +73,29 @@ std::string findInputProblem(MeshType &m) {
     if (f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(2) == f.cV(0))
       return "face " + std::to_string(i) + " repeats a vertex (remove duplicated vertices/faces first)";
   }
-  vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
-  // An edge is manifold when its FF ring has at most two faces. (Not
+  buildFaceFace(m);
+  // An edge is manifold when its FF ring has at most two faces; the first
+  // face (lowest index) with a non-manifold edge is named. (Not
   // Clean::CountNonManifoldEdgeFF: it takes face bit flags it never returns,
   // which inside MeshLab are shared with every other filter.)
-  std::size_t nonManifoldFaceEdges = 0, firstFace = 0;
-  for (std::size_t i = 0; i < m.face.size(); ++i)
-    for (int j = 0; j < 3; ++j)
-      if (!vcg::face::IsManifold(m.face[i], j) && nonManifoldFaceEdges++ == 0) firstFace = i;
-  if (nonManifoldFaceEdges > 0)
+  const std::int64_t nf = std::int64_t(m.face.size());
+  std::int64_t firstNonManifold = nf;
+  int misoriented = 0;
+#pragma omp parallel for schedule(static, 8192) reduction(min : firstNonManifold) \
+    reduction(max : misoriented)
+  for (std::int64_t i = 0; i < nf; ++i) {
+    auto &f = m.face[i];
+    for (int j = 0; j < 3; ++j) {
+      if (!vcg::face::IsManifold(f, j)) firstNonManifold = std::min(firstNonManifold, i);
+      else if (!vcg::face::CheckOrientation(f, j)) misoriented = 1;
+    }
+  }
+  if (firstNonManifold < nf)
     return "mesh has non-manifold edges (three or more faces on an edge, e.g. at face " +
-           std::to_string(firstFace) + ")";
-  if (int n = vcg::tri::Clean<MeshType>::CountNonManifoldVertexFF(m, false, false))
+           std::to_string(firstNonManifold) + ")";
+  if (std::size_t n = detail::countNonManifoldVertices(m))
     return "mesh has " + std::to_string(n) + " non-manifold vertices";
-  if (!vcg::tri::Clean<MeshType>::IsCoherentlyOrientedMesh(m))
-    return "faces are not consistently oriented (re-orient the mesh first)";
+  if (misoriented) return "faces are not consistently oriented (re-orient the mesh first)";
   return "";
 }
 

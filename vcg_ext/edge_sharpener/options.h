@@ -11,7 +11,8 @@ namespace edge_sharpener {
 
 /// Which placement/detection method runs.
 enum class Method {
-  Paper,  ///< the 2003 filter approach, exactly as published (section 3)
+  Paper,     ///< the 2003 filter approach, exactly as published (section 3)
+  Extended,  ///< feature zones of any width between segmented smooth regions (feature_zones.h)
 };
 
 /// Options of sharpen() and detectChamfers(). Angles are in radians.
@@ -41,6 +42,22 @@ struct SharpenOptions {
   bool colorize = false;
 
   Method method = Method::Paper;
+
+  // --- Extended method only (feature_zones.h) ---
+
+  /// A smooth region whose vertices are all fewer than this many hops from
+  /// its border is a corridor (e.g. a regular chamfer band) and joins the zone.
+  int minRegionDepth = 2;
+  /// Face rings around a region's border vertex used to fit its plane.
+  int supportRings = 2;
+  /// A zone vertex considers the regions reaching it within this many hops
+  /// of the closest one...
+  int labelSlackHops = 2;
+  /// ...and none farther than this.
+  int maxLabelHops = 8;
+  /// A zone vertex moves onto its region's plane only if the move is at
+  /// most this fraction of its mean edge length.
+  double maxProjectionFactor = 0.75;
 
   /// Optional progress callback (percent, stage name); may be null.
   vcg::CallBackPos *progress = nullptr;

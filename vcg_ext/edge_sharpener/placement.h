@@ -32,14 +32,27 @@ std::vector<Vec3> computeSupportNormals(MeshType &m, MeshLabels<MeshType> &label
   return normal;
 }
 
+/// The paper's support planes: through each original vertex, orthogonal to
+/// its support normal (a zero normal where no red triangle touches it).
+template <class MeshType>
+std::vector<Plane> paperSupportPlanes(MeshType &m, MeshLabels<MeshType> &labels) {
+  const std::vector<Vec3> normal = computeSupportNormals(m, labels);
+  std::vector<Plane> planes(normal.size());
+  for (std::size_t i = 0; i < planes.size(); ++i)
+    planes[i] = Plane{positionOf(&m.vert[i]), normal[i]};
+  return planes;
+}
+
 /// Where the planes put one inserted vertex, before the edge-length check.
+/// `supportPlane[v]` is the plane extrapolated from the smooth region next
+/// to original vertex v (zero normal: none).
 /// \return the outcome and, for Placement::Moved, the target in `target`.
-inline Placement proposePlacement(const InsertedVertexSource &src, const std::vector<Vec3> &origPos,
-                                  const std::vector<Vec3> &supportNormal,
+inline Placement proposePlacement(const InsertedVertexSource &src,
+                                  const std::vector<Plane> &supportPlane,
                                   const SharpenOptions &opt, Vec3 &target) {
   Plane planes[3];
   for (int i = 0; i < src.originalCount; ++i) {
-    planes[i] = Plane{origPos[src.original[i]], supportNormal[src.original[i]]};
+    planes[i] = supportPlane[src.original[i]];
     if (planes[i].normal.SquaredNorm() == 0) return Placement::NoSupportPlane;
   }
   if (opt.convexityCheck) {
@@ -105,23 +118,21 @@ std::size_t enforceEdgeLength(MeshType &m, const SplitPlan &plan, MeshLabels<Mes
 /// Stage 5: proposes a position for every inserted vertex, applies the
 /// degenerate-case fallbacks, and writes the positions into the mesh.
 /// Original vertices are never touched.
-/// \pre subdivide() ran with `plan`; `longestEdge` is the input's longest edge.
+/// \pre subdivide() ran with `plan`; `longestEdge` is the input's longest
+///      edge; `supportPlane` holds one plane per original vertex.
 template <class MeshType>
 PlacementStats placeInsertedVertices(MeshType &m, const SplitPlan &plan,
                                      MeshLabels<MeshType> &labels, double longestEdge,
-                                     const SharpenOptions &opt) {
+                                     const SharpenOptions &opt,
+                                     const std::vector<Plane> &supportPlane) {
   using Scalar = typename MeshType::ScalarType;
   PlacementStats s;
   const std::size_t n0 = plan.originalVertexCount;
-  const std::vector<Vec3> support = computeSupportNormals(m, labels);
-  std::vector<Vec3> origPos(n0);
-  for (std::size_t i = 0; i < n0; ++i) origPos[i] = positionOf(&m.vert[i]);
-
   std::vector<Vec3> insertedPos(plan.inserted.size());
   for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
     insertedPos[k] = plan.inserted[k].rest;
     Vec3 target;
-    const Placement p = proposePlacement(plan.inserted[k], origPos, support, opt, target);
+    const Placement p = proposePlacement(plan.inserted[k], supportPlane, opt, target);
     if (p == Placement::Moved) insertedPos[k] = target;
     labels.placement[n0 + k] = p;
   }

@@ -66,6 +66,18 @@ struct CleanupStats {
   std::size_t inherited = 0;   ///< degenerate children of input slivers, no vertex moved
 };
 
+/// Extended method: segmentation and zone labelling.
+struct ExtendedStats {
+  std::size_t regions = 0;               ///< smooth regions kept
+  std::size_t corridors = 0;             ///< thin smooth regions returned to the zone
+  std::size_t zoneFaces = 0;             ///< faces outside every region
+  std::size_t zoneVertices = 0;          ///< vertices outside every region
+  std::size_t labelledZoneVertices = 0;  ///< zone vertices given a region label
+  std::size_t projectedVertices = 0;     ///< zone vertices moved onto their region's plane
+  std::size_t projectionsRejected = 0;   ///< moves refused by the displacement/quality guards
+  double maxProjection = 0;              ///< longest such move
+};
+
 struct SharpenReport {
   std::size_t inputVertices = 0, inputFaces = 0;
   std::size_t outputVertices = 0, outputFaces = 0;
@@ -75,6 +87,8 @@ struct SharpenReport {
   SubdivisionStats subdivision;
   PlacementStats placement;
   CleanupStats cleanup;
+  bool extendedMethod = false;
+  ExtendedStats extended;        ///< filled by the extended method only
   bool geometryChanged = false;  ///< false for detection-only runs
 };
 
@@ -92,6 +106,16 @@ inline std::string formatReport(const SharpenReport &r) {
     << r.filters.coreRedFaces << ", red faces " << r.filters.redFaces << ", red vertices "
     << r.filters.redVertices << ", chamfer edges " << r.filters.chamferEdges << ", chamfer faces "
     << r.filters.chamferFaces << ", corner faces " << r.filters.cornerFaces << "\n";
+  if (r.extendedMethod) {
+    s << "feature zones: " << r.extended.regions << " smooth regions (" << r.extended.corridors
+      << " corridors dissolved), " << r.extended.zoneFaces << " zone faces, "
+      << r.extended.labelledZoneVertices << " of " << r.extended.zoneVertices
+      << " zone vertices labelled";
+    if (r.geometryChanged)
+      s << ", " << r.extended.projectedVertices << " projected onto their region (max "
+        << r.extended.maxProjection << ", " << r.extended.projectionsRejected << " refused)";
+    s << "\n";
+  }
   if (!r.geometryChanged) return s.str();
   s << "subdivision: " << r.subdivision.facesSplitIn2 << " faces split in 2, "
     << r.subdivision.facesSplitIn3 << " in 3, " << r.subdivision.facesSplitIn6 << " in 6; "

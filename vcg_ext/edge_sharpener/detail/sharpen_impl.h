@@ -7,6 +7,7 @@
 
 #include "../cleanup.h"
 #include "../colorize.h"
+#include "../feature_zones.h"
 #include "../filters.h"
 #include "../input_check.h"
 #include "../placement.h"
@@ -32,15 +33,28 @@ double longestEdgeLength(MeshType &m) {
   return std::sqrt(longest2);
 }
 
-/// Validates, then runs the smooth-edge test and the six filters.
+/// Smooth-edge test, then detection by the chosen method: the paper's six
+/// filters, or the extended method's regions and zone labels.
+/// Fills zones.plane with the support plane of every original vertex (and,
+/// for the extended method, the rest of `zones`).
 template <class MeshType>
 void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
-            SharpenReport &report) {
+            SharpenReport &report, FeatureZones &zones) {
   reportProgress(opt, 5, "Edge-Sharpener: smooth edges");
   computeFaceNormals(m, labels);
   report.smooth = labelSmoothEdges(m, labels, opt.smoothMultiplier);
-  reportProgress(opt, 20, "Edge-Sharpener: six filters");
-  report.filters = runSixFilters(m, labels);
+  if (opt.method == Method::Paper) {
+    reportProgress(opt, 20, "Edge-Sharpener: six filters");
+    report.filters = runSixFilters(m, labels);
+    zones.plane = paperSupportPlanes(m, labels);
+    return;
+  }
+  reportProgress(opt, 20, "Edge-Sharpener: feature zones");
+  report.extendedMethod = true;
+  const VertexFaceTable vf(m);
+  segmentRegions(m, labels, vf, opt.minRegionDepth, zones, report.extended);
+  labelZoneVertices(m, vf, opt, zones, report.extended);
+  report.filters = markZoneChamfers(m, labels, zones);
 }
 
 template <class MeshType>
@@ -68,7 +82,8 @@ template <class MeshType>
 SharpenReport detectChamfers(MeshType &m, const SharpenOptions &opt) {
   SharpenReport report = detail::validate(m, opt);
   MeshLabels<MeshType> labels(m);
-  detail::detect(m, labels, opt, report);
+  FeatureZones zones;
+  detail::detect(m, labels, opt, report, zones);
   colorize(m, labels);
   selectChamferFaces(m, labels);
   report.outputVertices = m.vert.size();
@@ -87,14 +102,18 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   SharpenReport report = detail::validate(m, opt);
   report.geometryChanged = true;
   MeshLabels<MeshType> labels(m);
-  detail::detect(m, labels, opt, report);
+  FeatureZones zones;
+  detail::detect(m, labels, opt, report, zones);
 
   detail::reportProgress(opt, 40, "Edge-Sharpener: subdivision");
   const SplitPlan plan = planSplits(m, labels);
   report.subdivision = subdivide(m, plan, labels);
 
   detail::reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
-  report.placement = placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt);
+  report.placement =
+      placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt, zones.plane);
+  if (opt.method == Method::Extended)
+    projectZoneVertices(m, zones, plan.originalVertexCount, opt, report.extended);
 
   detail::reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
   report.cleanup = removeDegenerateTriangles(m, plan, labels, opt.degenerateAngleRad);

@@ -1,0 +1,113 @@
+// Face-face adjacency in linear time: the face edges are bucketed by their
+// lower vertex index (a counting sort) instead of sorted as a whole, and the
+// buckets are matched in parallel (OpenMP). The result is the adjacency
+// vcg::tri::UpdateTopology<M>::FaceFace builds, for any thread count:
+//   - an edge with two faces: each face points at the other (FFp, FFi);
+//   - a boundary edge: the face points at itself, FFi(i) == i;
+//   - an edge with k > 2 faces (non-manifold): the faces form a ring, here in
+//     the order of their (face index, edge index) - vcglib leaves that order
+//     to std::sort, so any ring is as valid.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include <vcg/complex/complex.h>
+
+namespace edge_sharpener {
+
+namespace detail {
+
+/// One face edge in the bucket of its lower vertex: its higher vertex and its
+/// id, 3 x face index + edge index.
+struct BucketedEdge {
+  std::uint32_t hi;
+  std::uint32_t id;
+  bool operator<(const BucketedEdge &o) const { return hi != o.hi ? hi < o.hi : id < o.id; }
+};
+
+/// The face edges of `m` grouped by lower vertex: bucket v is
+/// edges[start[v] .. start[v+1]), sorted by (higher vertex, id).
+struct EdgeBuckets {
+  std::vector<std::uint32_t> start;
+  std::vector<BucketedEdge> edges;
+};
+
+template <class MeshType>
+EdgeBuckets bucketFaceEdges(MeshType &m) {
+  EdgeBuckets b;
+  const std::size_t nv = m.vert.size(), nf = m.face.size();
+  b.start.assign(nv + 2, 0);
+  if (nv == 0 || nf == 0) return b;
+  const auto *v0 = &m.vert[0];
+  // Counts land in start[lo + 2] so that, after the prefix sum, start[lo + 1]
+  // is the fill cursor of bucket lo and ends as the start of bucket lo + 1.
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto &face = m.face[f];
+    if (face.IsD()) continue;
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = std::uint32_t(face.cV(i) - v0);
+      const std::uint32_t c = std::uint32_t(face.cV((i + 1) % 3) - v0);
+      ++b.start[std::min(a, c) + 2];
+    }
+  }
+  for (std::size_t v = 2; v < nv + 2; ++v) b.start[v] += b.start[v - 1];
+  b.edges.resize(b.start[nv + 1]);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto &face = m.face[f];
+    if (face.IsD()) continue;
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = std::uint32_t(face.cV(i) - v0);
+      const std::uint32_t c = std::uint32_t(face.cV((i + 1) % 3) - v0);
+      b.edges[b.start[std::min(a, c) + 1]++] =
+          BucketedEdge{std::max(a, c), std::uint32_t(3 * f + i)};
+    }
+  }
+  b.start.pop_back();
+  // Filled in id order; sorting each small bucket by the higher vertex
+  // groups the faces of each edge.
+  const std::int64_t buckets = std::int64_t(nv);
+#pragma omp parallel for schedule(static, 8192)
+  for (std::int64_t v = 0; v < buckets; ++v) {
+    auto *first = b.edges.data() + b.start[v], *last = b.edges.data() + b.start[v + 1];
+    if (last - first < 2) continue;
+    // Insertion sort: buckets hold about six edges.
+    for (auto *p = first + 1; p < last; ++p)
+      for (auto *q = p; q > first && *q < *(q - 1); --q) std::swap(*q, *(q - 1));
+  }
+  return b;
+}
+
+}  // namespace detail
+
+/// Rebuilds the face-face adjacency of `m`, like
+/// vcg::tri::UpdateTopology<MeshType>::FaceFace (see the top of this file).
+/// Deleted faces are skipped and keep their old adjacency.
+template <class MeshType>
+void buildFaceFace(MeshType &m) {
+  vcg::tri::RequireFFAdjacency(m);
+  const detail::EdgeBuckets b = detail::bucketFaceEdges(m);
+  if (b.edges.empty()) return;
+  auto *f0 = &m.face[0];
+  const std::int64_t buckets = std::int64_t(b.start.size()) - 1;
+#pragma omp parallel for schedule(static, 8192)
+  for (std::int64_t v = 0; v < buckets; ++v) {
+    const detail::BucketedEdge *e = b.edges.data() + b.start[v];
+    const detail::BucketedEdge *end = b.edges.data() + b.start[v + 1];
+    while (e < end) {
+      const detail::BucketedEdge *run = e + 1;
+      while (run < end && run->hi == e->hi) ++run;
+      // Each face edge of the run points at the next one, the last at the first.
+      for (const detail::BucketedEdge *p = e; p < run; ++p) {
+        const detail::BucketedEdge *q = p + 1 < run ? p + 1 : e;
+        auto &f = f0[p->id / 3];
+        f.FFp(p->id % 3) = f0 + q->id / 3;
+        f.FFi(p->id % 3) = char(q->id % 3);
+      }
+      e = run;
+    }
+  }
+}
+
+}  // namespace edge_sharpener

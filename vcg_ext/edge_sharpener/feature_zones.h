@@ -1,0 +1,342 @@
+// The extended method's detection: smooth regions segmented into separate
+// surfaces, and a feature zone of any width between them whose vertices are
+// labelled with the surface they belong to.
+//
+// The paper's filters find a chamfer only where it is one triangle wide and
+// every vertex next to it is red. Marching cubes leaves bands two or more
+// triangles wide and whole corner patches whose vertices are not red. Here the
+// smooth part is split into regions (the paper's "global approach": triangles
+// connected through smooth edges), thin corridors are returned to the zone,
+// and each zone vertex takes the label of the nearby region whose local plane
+// it lies closest to. An edge whose endpoints carry different labels crosses
+// a sharp edge; a face with three labels contains a corner. The split and the
+// placement then follow the paper, with planes fitted to each region near
+// the feature instead of one vertex's normal.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <deque>
+#include <vector>
+
+#include "filters.h"
+#include "geometry.h"
+#include "mesh_labels.h"
+#include "options.h"
+#include "report.h"
+#include "vertex_faces.h"
+
+namespace edge_sharpener {
+
+constexpr int kZone = -1;    ///< face or vertex outside every smooth region
+constexpr int kCrease = -2;  ///< vertex shared by two or more regions: already sharp
+
+/// Per-face region and per-vertex label of the extended method.
+struct FeatureZones {
+  std::vector<int> faceRegion;   ///< region id, or kZone
+  std::vector<int> vertexLabel;  ///< region id, kZone (unlabelled) or kCrease
+  std::vector<char> inRegion;    ///< 1: a vertex of some region's face (never moves)
+  std::vector<Plane> plane;      ///< plane of the label's region near the vertex
+};
+
+namespace detail {
+
+/// Neighbouring vertices of v (through its faces), with repetitions.
+template <class MeshType, class Visit>
+void forEachNeighbour(const MeshType &m, const VertexFaceTable &vf, std::size_t v, Visit &&visit) {
+  for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t u = vcg::tri::Index(m, m.face[*fi].cV(k));
+      if (u != v) visit(u);
+    }
+}
+
+}  // namespace detail
+
+/// Splits the smooth part into regions: flood fills from the paper's core
+/// faces (filters 1-2) across smooth edges, one id per connected component,
+/// then returns to the zone every region thinner than `minDepth` hops
+/// (a corridor of smooth triangles, e.g. a wide but regular chamfer band).
+/// \pre labelSmoothEdges() ran. Writes labels.vertex/face like filters 1-2.
+template <class MeshType>
+void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceTable &vf,
+                    int minDepth, FeatureZones &zones, ExtendedStats &stats) {
+  using FacePointer = typename MeshType::FacePointer;
+  paintInteriorRedVertices(m, labels);
+  paintCoreRedFaces(m, labels);
+  zones.faceRegion.assign(m.face.size(), kZone);
+  int regions = 0;
+  std::vector<FacePointer> stack;
+  for (auto &seed : m.face) {
+    if (seed.IsD() || labels.face[&seed] != FaceLabel::Red) continue;
+    if (zones.faceRegion[vcg::tri::Index(m, &seed)] != kZone) continue;
+    const int id = regions++;
+    zones.faceRegion[vcg::tri::Index(m, &seed)] = id;
+    stack.push_back(&seed);
+    while (!stack.empty()) {
+      FacePointer f = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        FacePointer g = f->FFp(i);
+        if (g == f || labels.edge[f][i] != EdgeLabel::Smooth) continue;
+        int &r = zones.faceRegion[vcg::tri::Index(m, g)];
+        if (r != kZone) continue;
+        r = id;
+        stack.push_back(g);
+      }
+    }
+  }
+
+  // Depth of each region's vertices from the region's border, in hops.
+  const std::size_t nv = m.vert.size();
+  std::vector<int> depth(nv, -1), vertexRegion(nv, kZone);
+  std::deque<std::size_t> queue;
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (vf.degree(v) == 0) continue;
+    int r = zones.faceRegion[*vf.begin(v)];
+    bool interior = r != kZone;
+    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v) && interior; ++fi) {
+      const auto &f = m.face[*fi];
+      if (zones.faceRegion[*fi] != r) interior = false;
+      for (int k = 0; k < 3 && interior; ++k)  // a border edge at v
+        if (f.cFFp(k) == &f && (vcg::tri::Index(m, f.cV(k)) == v ||
+                                vcg::tri::Index(m, f.cV((k + 1) % 3)) == v))
+          interior = false;
+    }
+    if (interior) {
+      vertexRegion[v] = r;
+    } else {
+      depth[v] = 0;
+      queue.push_back(v);
+    }
+  }
+  std::vector<int> maxDepth(regions, 0);
+  while (!queue.empty()) {
+    const std::size_t v = queue.front();
+    queue.pop_front();
+    detail::forEachNeighbour(m, vf, v, [&](std::size_t u) {
+      if (depth[u] >= 0 || vertexRegion[u] == kZone) return;
+      depth[u] = depth[v] + 1;
+      maxDepth[vertexRegion[u]] = std::max(maxDepth[vertexRegion[u]], depth[u]);
+      queue.push_back(u);
+    });
+  }
+  std::vector<int> renumber(regions, kZone);
+  int kept = 0;
+  for (int r = 0; r < regions; ++r)
+    if (maxDepth[r] >= minDepth) renumber[r] = kept++;
+  stats.regions = std::size_t(kept);
+  stats.corridors = std::size_t(regions - kept);
+  for (int &r : zones.faceRegion) {
+    if (r != kZone) r = renumber[r];
+    stats.zoneFaces += r == kZone;
+  }
+  stats.zoneFaces -= m.face.size() - std::size_t(m.fn);  // deleted faces are not zone
+}
+
+/// The plane of region `r` near vertex v: through the area-weighted centroid,
+/// and orthogonal to the area-weighted normal, of the region's faces within
+/// `rings` face rings of v. Zero normal when v touches no face of r.
+template <class MeshType>
+Plane fitRegionPlane(const MeshType &m, const VertexFaceTable &vf, const FeatureZones &zones,
+                     std::size_t v, int r, int rings, std::vector<int> &stamp, int stampValue) {
+  std::vector<std::size_t> frontier{v}, next;
+  Vec3 normalSum(0, 0, 0), centroidSum(0, 0, 0);
+  double areaSum = 0;
+  for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
+    next.clear();
+    for (std::size_t w : frontier)
+      for (const std::uint32_t *fi = vf.begin(w); fi != vf.end(w); ++fi) {
+        if (zones.faceRegion[*fi] != r || stamp[*fi] == stampValue) continue;
+        stamp[*fi] = stampValue;
+        const auto &f = m.face[*fi];
+        const Vec3 p0 = positionOf(f.cV(0)), p1 = positionOf(f.cV(1)), p2 = positionOf(f.cV(2));
+        const Vec3 n = (p1 - p0) ^ (p2 - p0);  // twice the area times the unit normal
+        const double area = n.Norm();
+        normalSum += n;
+        centroidSum += (p0 + p1 + p2) * (area / 3.0);
+        areaSum += area;
+        for (int k = 0; k < 3; ++k) next.push_back(vcg::tri::Index(m, f.cV(k)));
+      }
+    frontier.swap(next);
+  }
+  const double len = normalSum.Norm();
+  if (!(areaSum > 0) || !(len > 0)) return Plane{positionOf(&m.vert[v]), Vec3(0, 0, 0)};
+  return Plane{centroidSum / areaSum, normalSum / len};
+}
+
+/// Labels every vertex: region vertices with their region (kCrease where
+/// several regions meet), zone vertices with the nearby region (within
+/// `opt.labelSlackHops` of the closest one, at most `opt.maxLabelHops` away)
+/// whose local plane is nearest; fills each labelled vertex's plane.
+template <class MeshType>
+void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const SharpenOptions &opt,
+                       FeatureZones &zones, ExtendedStats &stats) {
+  const std::size_t nv = m.vert.size();
+  zones.vertexLabel.assign(nv, kZone);
+  zones.inRegion.assign(nv, 0);
+  zones.plane.assign(nv, Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)});
+  std::vector<int> stamp(m.face.size(), -1);
+  int stampValue = 0;
+  std::vector<char> touchesZone(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v) {
+    int label = kZone;
+    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
+      const int r = zones.faceRegion[*fi];
+      if (r == kZone)
+        touchesZone[v] = 1;
+      else if (label == kZone)
+        label = r;
+      else if (label != r)
+        label = kCrease;
+    }
+    if (label == kZone) {
+      stats.zoneVertices += vf.degree(v) > 0;
+      continue;
+    }
+    zones.inRegion[v] = 1;
+    zones.vertexLabel[v] = label;
+    if (label >= 0 && touchesZone[v])
+      zones.plane[v] =
+          fitRegionPlane(m, vf, zones, v, label, opt.supportRings, stamp, stampValue++);
+  }
+
+  // Breadth-first waves from every region border vertex into the zone; each
+  // zone vertex keeps the first arrival of up to four regions.
+  struct Candidate {
+    int region;
+    std::uint32_t anchor;
+    int hops;
+  };
+  constexpr std::size_t kMaxCandidates = 4;
+  std::vector<std::array<Candidate, kMaxCandidates>> cand(nv);
+  std::vector<std::uint8_t> candCount(nv, 0);
+  std::deque<std::pair<std::uint32_t, Candidate>> queue;
+  for (std::size_t v = 0; v < nv; ++v)
+    if (zones.vertexLabel[v] >= 0 && touchesZone[v])
+      queue.push_back({std::uint32_t(v), Candidate{zones.vertexLabel[v], std::uint32_t(v), 0}});
+  while (!queue.empty()) {
+    const auto [v, c] = queue.front();
+    queue.pop_front();
+    if (c.hops >= opt.maxLabelHops) continue;
+    detail::forEachNeighbour(m, vf, v, [&, c = c](std::size_t u) {
+      if (zones.inRegion[u]) return;
+      auto &list = cand[u];
+      std::uint8_t &n = candCount[u];
+      if (n == kMaxCandidates) return;
+      if (n > 0 && c.hops + 1 > list[0].hops + opt.labelSlackHops) return;
+      for (std::uint8_t i = 0; i < n; ++i)
+        if (list[i].region == c.region) return;
+      list[n++] = Candidate{c.region, c.anchor, c.hops + 1};
+      queue.push_back({std::uint32_t(u), list[n - 1]});
+    });
+  }
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (zones.inRegion[v] || candCount[v] == 0) continue;
+    const Vec3 p = positionOf(&m.vert[v]);
+    double best = std::numeric_limits<double>::infinity();
+    for (std::uint8_t i = 0; i < candCount[v]; ++i) {
+      const Plane &pl = zones.plane[cand[v][i].anchor];
+      if (pl.normal.SquaredNorm() == 0) continue;
+      const double d = std::abs(pl.normal * (p - pl.point));
+      if (d < best) {  // ties keep the earlier (closer in hops) candidate
+        best = d;
+        zones.vertexLabel[v] = cand[v][i].region;
+        zones.plane[v] = pl;
+      }
+    }
+    stats.labelledZoneVertices += zones.vertexLabel[v] >= 0;
+  }
+}
+
+/// Marks the chamfer edges and faces of the extended method in the paper's
+/// labels, so the paper's split plan and subdivision apply unchanged: region
+/// faces are red; an edge between two zone faces (or a zone face and the
+/// mesh border) whose endpoints carry different region labels is a chamfer
+/// edge; faces with three such edges are corners.
+template <class MeshType>
+FilterStats markZoneChamfers(MeshType &m, MeshLabels<MeshType> &labels,
+                             const FeatureZones &zones) {
+  FilterStats s;
+  for (auto &f : m.face) {
+    if (f.IsD()) continue;
+    const bool region = zones.faceRegion[vcg::tri::Index(m, &f)] != kZone;
+    labels.face[&f] = region ? FaceLabel::Red : FaceLabel::Gray;
+    labels.edge[&f] = EdgeLabels3{EdgeLabel::Gray, EdgeLabel::Gray, EdgeLabel::Gray};
+    s.redFaces += region;
+  }
+  for (std::size_t v = 0; v < m.vert.size(); ++v) {
+    labels.vertex[v] = zones.inRegion[v] ? VertexLabel::Red : VertexLabel::Gray;
+    s.redVertices += zones.inRegion[v];
+  }
+  forEachEdge(m, [&](auto *f, int i, bool boundary) {
+    if (zones.faceRegion[vcg::tri::Index(m, f)] != kZone) return;
+    if (!boundary && zones.faceRegion[vcg::tri::Index(m, f->FFp(i))] != kZone) return;
+    const int a = zones.vertexLabel[vcg::tri::Index(m, f->cV(i))];
+    const int b = zones.vertexLabel[vcg::tri::Index(m, f->cV((i + 1) % 3))];
+    if (a >= 0 && b >= 0 && a != b) {
+      labels.setEdge(f, i, EdgeLabel::Chamfer);
+      ++s.chamferEdges;
+    }
+  });
+  std::tie(s.cornerFaces, s.chamferFaces) = paintCornerAndChamferFaces(m, labels);
+  return s;
+}
+
+/// Moves each labelled zone vertex (an original vertex outside every region)
+/// onto its region's plane, the surface it samples: marching cubes and
+/// similar samplers leave such vertices on the rounded band. A move longer
+/// than `opt.maxProjectionFactor` x the vertex's mean edge length, or one
+/// that would flip an incident face or create an angle below the
+/// degenerate threshold, is not made. Region vertices never move.
+/// \return the number of vertices moved.
+template <class MeshType>
+std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::size_t originalCount,
+                                const SharpenOptions &opt, ExtendedStats &stats) {
+  using Scalar = typename MeshType::ScalarType;
+  const VertexFaceTable vf(m);  // after subdivision
+  std::size_t moved = 0;
+  for (std::size_t v = 0; v < originalCount; ++v) {
+    if (zones.inRegion[v] || zones.vertexLabel[v] < 0 || vf.degree(v) == 0) continue;
+    const Plane &pl = zones.plane[v];
+    const Vec3 p = positionOf(&m.vert[v]);
+    const Vec3 target = p - pl.normal * (pl.normal * (p - pl.point));
+    const double step = (target - p).Norm();
+    if (step == 0) continue;
+    double edgeSum = 0;
+    int edgeCount = 0;
+    detail::forEachNeighbour(m, vf, v, [&](std::size_t u) {
+      edgeSum += (positionOf(&m.vert[u]) - p).Norm();
+      ++edgeCount;
+    });
+    if (step > opt.maxProjectionFactor * edgeSum / std::max(1, edgeCount)) {
+      ++stats.projectionsRejected;
+      continue;
+    }
+    bool ok = true;
+    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v) && ok; ++fi) {
+      const auto &f = m.face[*fi];
+      Vec3 q[3], r[3];
+      for (int k = 0; k < 3; ++k) {
+        q[k] = positionOf(f.cV(k));
+        r[k] = vcg::tri::Index(m, f.cV(k)) == v ? target : q[k];
+      }
+      const Vec3 before = (q[1] - q[0]) ^ (q[2] - q[0]);
+      const Vec3 after = (r[1] - r[0]) ^ (r[2] - r[0]);
+      const double minBefore = minTriangleAngle(q[0], q[1], q[2]);
+      const double minAfter = minTriangleAngle(r[0], r[1], r[2]);
+      ok = before * after > 0 && (minAfter >= opt.degenerateAngleRad || minAfter >= minBefore);
+    }
+    if (!ok) {
+      ++stats.projectionsRejected;
+      continue;
+    }
+    m.vert[v].P() = vcg::Point3<Scalar>::Construct(target);
+    stats.maxProjection = std::max(stats.maxProjection, step);
+    ++moved;
+  }
+  stats.projectedVertices = moved;
+  return moved;
+}
+
+}  // namespace edge_sharpener
