@@ -78,6 +78,20 @@ const OptionParam kDegenerateAngle{
       o.degenerateAngleRad = par.getFloat("degenerateAngleDeg") * kPi / 180.0;
     }};
 
+const OptionParam kMethod{
+    [](RichParameterList &par, const es::SharpenOptions &d) {
+      par.addParam(RichEnum(
+          "method", d.method == es::Method::Extended ? 1 : 0,
+          QStringList() << "Paper (2003)" << "Extended (feature zones)", "Method",
+          "<b>Paper</b>: the 2003 method exactly as published (chamfers one triangle wide).<br>"
+          "<b>Extended</b>: smooth regions are segmented and the feature zone between them may "
+          "be of any width (marching-cubes bands and corner patches); zone vertices are moved "
+          "onto their region's fitted plane, never the vertices of smooth regions."));
+    },
+    [](const RichParameterList &par, es::SharpenOptions &o) {
+      o.method = par.getEnum("method") == 1 ? es::Method::Extended : es::Method::Paper;
+    }};
+
 // ---------------------------------------------------------------------------
 // Filters.
 
@@ -116,7 +130,7 @@ const std::vector<FilterSpec> &filterTable() {
        "angle are removed.<br>"
        "Needs a two-manifold triangle mesh (point clouds and non-manifold meshes are "
        "refused and left untouched). The report of every stage is written to the log.",
-       {&kSmoothMultiplier, &kEdgeLengthCheck, &kColorize, &kDegenerateAngle},
+       {&kMethod, &kSmoothMultiplier, &kEdgeLengthCheck, &kColorize, &kDegenerateAngle},
        &es::sharpen<CMeshO>,
        false,
        MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |
@@ -129,7 +143,7 @@ const std::vector<FilterSpec> &filterTable() {
        "others grey) and selects the chamfer and corner triangles, i.e. the faces that "
        "<i>Sharpen Chamfered Edges</i> would subdivide.<br>"
        "Useful to tune the smooth-edge multiplier before sharpening.",
-       {&kSmoothMultiplier},
+       {&kMethod, &kSmoothMultiplier},
        &es::detectChamfers<CMeshO>,
        true,
        MeshModel::MM_VERTCOLOR | MeshModel::MM_FACECOLOR | MeshModel::MM_FACEFLAGSELECT},

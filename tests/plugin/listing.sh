@@ -21,11 +21,13 @@ check_filter() {
   log "'$name' listed with $(wc -l <<<"$got") parameter(s)"
 }
 
-check_filter "Edge-Sharpener: Sharpen Chamfered Edges" "Float|Smooth-edge multiplier
+check_filter "Edge-Sharpener: Sharpen Chamfered Edges" "Enum|Method
+Float|Smooth-edge multiplier
 Bool|Edge-length check
 Bool|Colorize
 Float|Degenerate angle (deg)"
-check_filter "Edge-Sharpener: Detect Chamfers" "Float|Smooth-edge multiplier"
+check_filter "Edge-Sharpener: Detect Chamfers" "Enum|Method
+Float|Smooth-edge multiplier"
 
 total=$(sed -n 's/^Total \([0-9]*\) filtering actions.*/\1/p' listing.out)
 log "meshlabserver reports $total filtering actions"
