@@ -25,7 +25,9 @@ struct CliOptions {
   std::string input, output, reference;
   double multiplier = 2.0;
   std::string method = "paper";
+  es::SharpenOptions extended;  // tuning of the extended method
   double degenerateAngleDeg = 1.0;
+  bool keepContacts = false;
   bool noLengthCheck = false, noConvexityCheck = false;
   bool colorize = false, detectOnly = false, json = false, quiet = false;
 };
@@ -63,6 +65,12 @@ int run(const CliOptions &cli) {
   es::SharpenOptions opt;
   opt.smoothMultiplier = cli.multiplier;
   opt.method = cli.method == "extended" ? es::Method::Extended : es::Method::Paper;
+  opt.minRegionDepth = cli.extended.minRegionDepth;
+  opt.supportRings = cli.extended.supportRings;
+  opt.maxProjectionFactor = cli.extended.maxProjectionFactor;
+  opt.apexHeightFactor = cli.extended.apexHeightFactor;
+  opt.openRegionContacts = !cli.keepContacts;
+  opt.extendedEdgeLengthFactor = cli.extended.extendedEdgeLengthFactor;
   opt.edgeLengthCheck = !cli.noLengthCheck;
   opt.convexityCheck = !cli.noConvexityCheck;
   opt.degenerateAngleRad = cli.degenerateAngleDeg * M_PI / 180.0;
@@ -126,6 +134,30 @@ int main(int argc, char **argv) {
                  "paper: the 2003 method as published; extended: feature zones of any width")
       ->default_val("paper")
       ->check(CLI::IsMember({"paper", "extended"}));
+  app.add_option("--min-region-depth", cli.extended.minRegionDepth,
+                 "extended: thinner smooth regions (in hops) are corridors of the feature zone")
+      ->default_val(cli.extended.minRegionDepth)
+      ->check(CLI::Range(0, 100));
+  app.add_option("--support-rings", cli.extended.supportRings,
+                 "extended: face rings used to fit a region's plane")
+      ->default_val(cli.extended.supportRings)
+      ->check(CLI::Range(1, 20));
+  app.add_option("--max-projection", cli.extended.maxProjectionFactor,
+                 "extended: longest move of a zone vertex onto its region's plane, in mean edge "
+                 "lengths (0: never)")
+      ->default_val(cli.extended.maxProjectionFactor)
+      ->check(CLI::Range(0.0, 10.0));
+  app.add_option("--apex-factor", cli.extended.apexHeightFactor,
+                 "extended: keep a vertex at rest when the planes meet this many times higher "
+                 "above its chamfer than their angle allows (0: off)")
+      ->default_val(cli.extended.apexHeightFactor)
+      ->check(CLI::Range(0.0, 100.0));
+  app.add_option("--length-factor", cli.extended.extendedEdgeLengthFactor,
+                 "extended: the edge-length check allows this multiple of the longest input edge")
+      ->default_val(cli.extended.extendedEdgeLengthFactor)
+      ->check(CLI::Range(1.0, 100.0));
+  app.add_flag("--keep-contacts", cli.keepContacts,
+               "extended: leave faces where two smooth regions touch in their regions");
   app.add_flag("--no-length-check", cli.noLengthCheck,
                "allow placements that create edges longer than the input's longest");
   app.add_flag("--no-convexity-check", cli.noConvexityCheck,

@@ -134,6 +134,36 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
   stats.zoneFaces -= m.face.size() - std::size_t(m.fn);  // deleted faces are not zone
 }
 
+/// Returns to the zone every region face with a vertex shared by two or more
+/// regions. Where two regions touch directly the chamfer was swallowed by
+/// their growth (its edges passed the smooth test); opening the contact
+/// turns it back into a zone to sharpen.
+/// \return the number of faces returned to the zone.
+template <class MeshType>
+std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, FeatureZones &zones) {
+  std::vector<char> contact(m.vert.size(), 0);
+  for (std::size_t v = 0; v < m.vert.size(); ++v) {
+    int seen = kZone;
+    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
+      const int r = zones.faceRegion[*fi];
+      if (r == kZone) continue;
+      if (seen == kZone) seen = r;
+      if (seen != r) contact[v] = 1;
+    }
+  }
+  std::size_t opened = 0;
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    if (zones.faceRegion[f] == kZone || m.face[f].IsD()) continue;
+    for (int k = 0; k < 3; ++k)
+      if (contact[vcg::tri::Index(m, m.face[f].cV(k))]) {
+        zones.faceRegion[f] = kZone;
+        ++opened;
+        break;
+      }
+  }
+  return opened;
+}
+
 /// The plane of region `r` near vertex v: through the area-weighted centroid,
 /// and orthogonal to the area-weighted normal, of the region's faces within
 /// `rings` face rings of v. Zero normal when v touches no face of r.

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include <vcg/space/point3.h>
@@ -82,6 +83,31 @@ inline EdgeConvexity classifyChamferEdge(const Plane &p, const Plane &q, double 
                                            : EdgeConvexity::Flat;
   if (a != b) return EdgeConvexity::Mixed;
   return a < 0 ? EdgeConvexity::Convex : EdgeConvexity::Concave;
+}
+
+/// How far the sharp edge X (a point of the line P∩Q) stands above the
+/// chamfer AB (A = p.point, B = q.point), relative to the most the angle
+/// between the planes allows. In the cross-section orthogonal to the line,
+/// A', B' and X' form a triangle whose angle at X' is pi - theta (theta: the
+/// angle between the normals), so the height of X' over A'B' is at most
+/// |A'B'|/2 tan(theta/2), reached when the chamfer is symmetric. A ratio well
+/// above 1 means P and Q do not meet across this chamfer: another surface
+/// lies between them (e.g. a facet narrower than the sampling).
+/// \return the ratio, or +infinity when the cross-section degenerates.
+inline double chamferApexHeightRatio(const Plane &p, const Plane &q, const Vec3 &x) {
+  Vec3 u = p.normal ^ q.normal;
+  const double len = u.Norm();
+  if (!(len > 0)) return std::numeric_limits<double>::infinity();
+  u /= len;
+  const auto project = [&u](const Vec3 &v) { return v - u * (u * v); };
+  const Vec3 a = project(p.point), b = project(q.point), apex = project(x);
+  const Vec3 base = b - a;
+  const double baseLen = base.Norm();
+  const double theta = angleBetween(p.normal, q.normal);
+  const double bound = 0.5 * baseLen * std::tan(0.5 * theta);
+  if (!(bound > 0)) return std::numeric_limits<double>::infinity();
+  const double height = ((apex - a) ^ base).Norm() / baseLen;
+  return height / bound;
 }
 
 /// Smallest interior angle of triangle abc in radians (0 for a degenerate one).

@@ -40,8 +40,9 @@ enum class Placement : std::uint8_t {
   EdgeTooLong,      ///< moving would create an edge longer than the input's longest
   MixedConvexity,   ///< chamfer bordered by a concave and a convex side
   DegenerateRevert, ///< moved back by the degenerate-triangle cleanup
+  FarFromChamfer,   ///< extended method: the planes meet farther off than their angle allows
 };
-constexpr int kPlacementCount = 8;
+constexpr int kPlacementCount = 9;
 
 const char *toString(Placement p);
 
@@ -55,6 +56,7 @@ inline const char *toString(Placement p) {
     case Placement::EdgeTooLong: return "edge_too_long";
     case Placement::MixedConvexity: return "mixed_convexity";
     case Placement::DegenerateRevert: return "degenerate_revert";
+    case Placement::FarFromChamfer: return "far_from_chamfer";
   }
   return "unknown";
 }

@@ -47,7 +47,10 @@ struct SharpenOptions {
 
   /// A smooth region whose vertices are all fewer than this many hops from
   /// its border is a corridor (e.g. a regular chamfer band) and joins the zone.
-  int minRegionDepth = 2;
+  int minRegionDepth = 1;
+  /// Return to the zone the region faces around vertices where two regions
+  /// touch (feature_zones.h: openRegionContacts).
+  bool openRegionContacts = true;
   /// Face rings around a region's border vertex used to fit its plane.
   int supportRings = 2;
   /// A zone vertex considers the regions reaching it within this many hops
@@ -58,6 +61,14 @@ struct SharpenOptions {
   /// A zone vertex moves onto its region's plane only if the move is at
   /// most this fraction of its mean edge length.
   double maxProjectionFactor = 0.75;
+  /// The edge-length check allows edges up to this multiple of the input's
+  /// longest edge: the tip of an acute edge (a 35-degree wedge) lies well
+  /// beyond its chamfer, and the apex test below guards against far planes.
+  double extendedEdgeLengthFactor = 2.0;
+  /// An inserted vertex stays at rest when the planes meet more than this
+  /// factor above its chamfer than their angle allows
+  /// (geometry.h: chamferApexHeightRatio); 0 disables the test.
+  double apexHeightFactor = 1.5;
 
   /// Optional progress callback (percent, stage name); may be null.
   vcg::CallBackPos *progress = nullptr;

@@ -14,15 +14,26 @@ namespace edge_sharpener {
 /// incident red triangles weighted by the triangle's angle at the vertex
 /// (paper: "as weights, we use the angle between the two edges of the
 /// incident triangle that meet at A"). Zero where no red triangle touches it.
+/// With `wanted`, only the vertices v with (*wanted)[v] != 0 get theirs (the
+/// same values, bit for bit); the others get zero.
 template <class MeshType>
-std::vector<Vec3> computeSupportNormals(MeshType &m, MeshLabels<MeshType> &labels) {
+std::vector<Vec3> computeSupportNormals(MeshType &m, MeshLabels<MeshType> &labels,
+                                        const std::vector<char> *wanted = nullptr) {
   std::vector<Vec3> normal(m.vert.size(), Vec3(0, 0, 0));
   for (auto &f : m.face) {
     if (f.IsD() || labels.face[&f] != FaceLabel::Red) continue;
+    std::size_t vi[3];
+    bool any = false;
+    for (int i = 0; i < 3; ++i) {
+      vi[i] = vcg::tri::Index(m, f.cV(i));
+      any |= !wanted || (*wanted)[vi[i]];
+    }
+    if (!any) continue;
     const Vec3 p[3] = {positionOf(f.cV(0)), positionOf(f.cV(1)), positionOf(f.cV(2))};
     for (int i = 0; i < 3; ++i) {
+      if (wanted && !(*wanted)[vi[i]]) continue;
       const double w = cornerAngle(p[i], p[(i + 1) % 3], p[(i + 2) % 3]);
-      normal[vcg::tri::Index(m, f.cV(i))] += labels.normal[&f] * w;
+      normal[vi[i]] += labels.normal[&f] * w;
     }
   }
   for (auto &n : normal) {
@@ -34,9 +45,18 @@ std::vector<Vec3> computeSupportNormals(MeshType &m, MeshLabels<MeshType> &label
 
 /// The paper's support planes: through each original vertex, orthogonal to
 /// its support normal (a zero normal where no red triangle touches it).
+/// Only the vertices of chamfer and corner faces get a normal - the only
+/// planes placement reads (the sources of the inserted vertices); the others
+/// get a zero one. \pre runSixFilters() ran.
 template <class MeshType>
 std::vector<Plane> paperSupportPlanes(MeshType &m, MeshLabels<MeshType> &labels) {
-  const std::vector<Vec3> normal = computeSupportNormals(m, labels);
+  std::vector<char> wanted(m.vert.size(), 0);
+  for (auto &f : m.face) {
+    const FaceLabel label = labels.face[&f];
+    if (f.IsD() || (label != FaceLabel::Chamfer && label != FaceLabel::Corner)) continue;
+    for (int i = 0; i < 3; ++i) wanted[vcg::tri::Index(m, f.cV(i))] = 1;
+  }
+  const std::vector<Vec3> normal = computeSupportNormals(m, labels, &wanted);
   std::vector<Plane> planes(normal.size());
   for (std::size_t i = 0; i < planes.size(); ++i)
     planes[i] = Plane{positionOf(&m.vert[i]), normal[i]};
@@ -72,6 +92,13 @@ inline Placement proposePlacement(const InsertedVertexSource &src,
     auto x = intersectThreePlanes(planes[0], planes[1], planes[2], opt.parallelAngleRad);
     if (!x) return Placement::CoplanarNormals;
     target = *x;
+  }
+  if (opt.method == Method::Extended && opt.apexHeightFactor > 0) {
+    const int pairs = src.originalCount == 2 ? 1 : 3;
+    for (int i = 0; i < pairs; ++i)
+      if (chamferApexHeightRatio(planes[i], planes[(i + 1) % src.originalCount], target) >
+          opt.apexHeightFactor)
+        return Placement::FarFromChamfer;
   }
   return Placement::Moved;
 }
@@ -136,7 +163,10 @@ PlacementStats placeInsertedVertices(MeshType &m, const SplitPlan &plan,
     if (p == Placement::Moved) insertedPos[k] = target;
     labels.placement[n0 + k] = p;
   }
-  if (opt.edgeLengthCheck) enforceEdgeLength(m, plan, labels, insertedPos, longestEdge);
+  if (opt.edgeLengthCheck) {
+    const double factor = opt.method == Method::Extended ? opt.extendedEdgeLengthFactor : 1.0;
+    enforceEdgeLength(m, plan, labels, insertedPos, factor * longestEdge);
+  }
 
   for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
     m.vert[n0 + k].P() = vcg::Point3<Scalar>::Construct(insertedPos[k]);

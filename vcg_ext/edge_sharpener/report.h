@@ -70,6 +70,7 @@ struct CleanupStats {
 struct ExtendedStats {
   std::size_t regions = 0;               ///< smooth regions kept
   std::size_t corridors = 0;             ///< thin smooth regions returned to the zone
+  std::size_t openedContacts = 0;        ///< region faces returned to the zone at region contacts
   std::size_t zoneFaces = 0;             ///< faces outside every region
   std::size_t zoneVertices = 0;          ///< vertices outside every region
   std::size_t labelledZoneVertices = 0;  ///< zone vertices given a region label

@@ -53,6 +53,10 @@ void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
   report.extendedMethod = true;
   const VertexFaceTable vf(m);
   segmentRegions(m, labels, vf, opt.minRegionDepth, zones, report.extended);
+  if (opt.openRegionContacts) {
+    report.extended.openedContacts = openRegionContacts(m, vf, zones);
+    report.extended.zoneFaces += report.extended.openedContacts;
+  }
   labelZoneVertices(m, vf, opt, zones, report.extended);
   report.filters = markZoneChamfers(m, labels, zones);
 }
