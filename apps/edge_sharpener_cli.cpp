@@ -70,6 +70,7 @@ int run(const CliOptions &cli) {
   opt.maxProjectionFactor = cli.extended.maxProjectionFactor;
   opt.apexHeightFactor = cli.extended.apexHeightFactor;
   opt.openRegionContacts = !cli.keepContacts;
+  opt.maxSupportSpreadRatio = cli.extended.maxSupportSpreadRatio;
   opt.extendedEdgeLengthFactor = cli.extended.extendedEdgeLengthFactor;
   opt.edgeLengthCheck = !cli.noLengthCheck;
   opt.convexityCheck = !cli.noConvexityCheck;
@@ -156,6 +157,11 @@ int main(int argc, char **argv) {
                  "extended: the edge-length check allows this multiple of the longest input edge")
       ->default_val(cli.extended.extendedEdgeLengthFactor)
       ->check(CLI::Range(1.0, 100.0));
+  app.add_option("--spread-ratio", cli.extended.maxSupportSpreadRatio,
+                 "extended: keep a vertex at rest when its regions turn by more than this "
+                 "fraction of the angle between their planes (a blend; 0: off)")
+      ->default_val(cli.extended.maxSupportSpreadRatio)
+      ->check(CLI::Range(0.0, 10.0));
   app.add_flag("--keep-contacts", cli.keepContacts,
                "extended: leave faces where two smooth regions touch in their regions");
   app.add_flag("--no-length-check", cli.noLengthCheck,

