@@ -164,13 +164,18 @@ CleanupStats removeDegenerateTriangles(MeshType &m, const SplitPlan &plan,
   const auto degenerate = [&](const typename MeshType::FaceType &f) {
     return !f.IsD() && detail::isSplitChild(labels.face[&f]) && detail::faceMinAngle(f) < angleRad;
   };
-  for (const auto &f : m.face) s.degenerateFound += degenerate(f);
+  // Only split children can be degenerate, and no step below relabels a face
+  // or adds one: scanning these (in index order) is scanning every face.
+  std::vector<std::size_t> children;
+  for (std::size_t i = 0; i < m.face.size(); ++i)
+    if (!m.face[i].IsD() && detail::isSplitChild(labels.face[&m.face[i]])) children.push_back(i);
+  for (const std::size_t i : children) s.degenerateFound += degenerate(m.face[i]);
   if (s.degenerateFound == 0) return s;
 
   constexpr int kMaxPasses = 16;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     bool changed = false;
-    for (std::size_t i = 0; i < m.face.size(); ++i) {
+    for (const std::size_t i : children) {
       auto &f = m.face[i];
       if (!degenerate(f)) continue;
       if (collapseNeedle(m, f, plan, angleRad)) {
@@ -186,7 +191,8 @@ CleanupStats removeDegenerateTriangles(MeshType &m, const SplitPlan &plan,
     }
     if (!changed) break;
   }
-  for (const auto &f : m.face) {
+  for (const std::size_t i : children) {
+    const auto &f = m.face[i];
     if (!degenerate(f)) continue;
     bool moved = false;
     for (int j = 0; j < 3; ++j) moved |= labels.placement[f.cV(j)] == Placement::Moved;

@@ -9,13 +9,17 @@
 //     to std::sort, so any ring is as valid.
 #pragma once
 
+#include <vcg/complex/complex.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <vector>
 
-#include <vcg/complex/complex.h>
-
 namespace edge_sharpener {
+
+/// Loops over fewer elements than this run on one thread: below it, starting
+/// threads costs more than it saves.
+constexpr std::int64_t kParallelMin = 50000;
 
 namespace detail {
 
@@ -68,7 +72,7 @@ EdgeBuckets bucketFaceEdges(MeshType &m) {
   // Filled in id order; sorting each small bucket by the higher vertex
   // groups the faces of each edge.
   const std::int64_t buckets = std::int64_t(nv);
-#pragma omp parallel for schedule(static, 8192)
+#pragma omp parallel for schedule(static, 8192) if (buckets > kParallelMin)
   for (std::int64_t v = 0; v < buckets; ++v) {
     auto *first = b.edges.data() + b.start[v], *last = b.edges.data() + b.start[v + 1];
     if (last - first < 2) continue;
@@ -91,7 +95,7 @@ void buildFaceFace(MeshType &m) {
   if (b.edges.empty()) return;
   auto *f0 = &m.face[0];
   const std::int64_t buckets = std::int64_t(b.start.size()) - 1;
-#pragma omp parallel for schedule(static, 8192)
+#pragma omp parallel for schedule(static, 8192) if (buckets > kParallelMin)
   for (std::int64_t v = 0; v < buckets; ++v) {
     const detail::BucketedEdge *e = b.edges.data() + b.start[v];
     const detail::BucketedEdge *end = b.edges.data() + b.start[v + 1];

@@ -23,6 +23,7 @@
 #include "geometry.h"
 #include "mesh_labels.h"
 #include "options.h"
+#include "placement.h"
 #include "report.h"
 #include "vertex_faces.h"
 
@@ -36,7 +37,7 @@ struct FeatureZones {
   std::vector<int> faceRegion;   ///< region id, or kZone
   std::vector<int> vertexLabel;  ///< region id, kZone (unlabelled) or kCrease
   std::vector<char> inRegion;    ///< 1: a vertex of some region's face (never moves)
-  std::vector<Plane> plane;      ///< plane of the label's region near the vertex
+  SupportPlanes support;         ///< plane of the label's region near the vertex
 };
 
 namespace detail {
@@ -166,11 +167,14 @@ std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, Fea
 
 /// The plane of region `r` near vertex v: through the area-weighted centroid,
 /// and orthogonal to the area-weighted normal, of the region's faces within
-/// `rings` face rings of v. Zero normal when v touches no face of r.
+/// `rings` face rings of v (zero normal when v touches no face of r); and in
+/// `spreadRad` the largest angle between that normal and a fitted face's.
 template <class MeshType>
 Plane fitRegionPlane(const MeshType &m, const VertexFaceTable &vf, const FeatureZones &zones,
-                     std::size_t v, int r, int rings, std::vector<int> &stamp, int stampValue) {
+                     std::size_t v, int r, int rings, std::vector<int> &stamp, int stampValue,
+                     double &spreadRad) {
   std::vector<std::size_t> frontier{v}, next;
+  std::vector<Vec3> faceNormals;
   Vec3 normalSum(0, 0, 0), centroidSum(0, 0, 0);
   double areaSum = 0;
   for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
@@ -184,15 +188,19 @@ Plane fitRegionPlane(const MeshType &m, const VertexFaceTable &vf, const Feature
         const Vec3 n = (p1 - p0) ^ (p2 - p0);  // twice the area times the unit normal
         const double area = n.Norm();
         normalSum += n;
+        if (area > 0) faceNormals.push_back(n / area);
         centroidSum += (p0 + p1 + p2) * (area / 3.0);
         areaSum += area;
         for (int k = 0; k < 3; ++k) next.push_back(vcg::tri::Index(m, f.cV(k)));
       }
     frontier.swap(next);
   }
+  spreadRad = 0;
   const double len = normalSum.Norm();
   if (!(areaSum > 0) || !(len > 0)) return Plane{positionOf(&m.vert[v]), Vec3(0, 0, 0)};
-  return Plane{centroidSum / areaSum, normalSum / len};
+  const Vec3 normal = normalSum / len;
+  for (const Vec3 &n : faceNormals) spreadRad = std::max(spreadRad, angleBetween(normal, n));
+  return Plane{centroidSum / areaSum, normal};
 }
 
 /// Labels every vertex: region vertices with their region (kCrease where
@@ -205,7 +213,8 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
   const std::size_t nv = m.vert.size();
   zones.vertexLabel.assign(nv, kZone);
   zones.inRegion.assign(nv, 0);
-  zones.plane.assign(nv, Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)});
+  zones.support.plane.assign(nv, Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)});
+  zones.support.spreadRad.assign(nv, 0.0);
   std::vector<int> stamp(m.face.size(), -1);
   int stampValue = 0;
   std::vector<char> touchesZone(nv, 0);
@@ -227,8 +236,8 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
     zones.inRegion[v] = 1;
     zones.vertexLabel[v] = label;
     if (label >= 0 && touchesZone[v])
-      zones.plane[v] =
-          fitRegionPlane(m, vf, zones, v, label, opt.supportRings, stamp, stampValue++);
+      zones.support.plane[v] = fitRegionPlane(m, vf, zones, v, label, opt.supportRings, stamp,
+                                              stampValue++, zones.support.spreadRad[v]);
   }
 
   // Breadth-first waves from every region border vertex into the zone; each
@@ -266,13 +275,14 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
     const Vec3 p = positionOf(&m.vert[v]);
     double best = std::numeric_limits<double>::infinity();
     for (std::uint8_t i = 0; i < candCount[v]; ++i) {
-      const Plane &pl = zones.plane[cand[v][i].anchor];
+      const Plane &pl = zones.support.plane[cand[v][i].anchor];
       if (pl.normal.SquaredNorm() == 0) continue;
       const double d = std::abs(pl.normal * (p - pl.point));
       if (d < best) {  // ties keep the earlier (closer in hops) candidate
         best = d;
         zones.vertexLabel[v] = cand[v][i].region;
-        zones.plane[v] = pl;
+        zones.support.plane[v] = pl;
+        zones.support.spreadRad[v] = zones.support.spreadRad[cand[v][i].anchor];
       }
     }
     stats.labelledZoneVertices += zones.vertexLabel[v] >= 0;
@@ -314,21 +324,24 @@ FilterStats markZoneChamfers(MeshType &m, MeshLabels<MeshType> &labels,
 }
 
 /// Moves each labelled zone vertex (an original vertex outside every region)
-/// onto its region's plane, the surface it samples: marching cubes and
-/// similar samplers leave such vertices on the rounded band. A move longer
+/// that borders a sharpened edge (`nearSharpEdge`) onto its region's plane,
+/// the surface it samples: marching cubes and similar samplers leave such
+/// vertices on the rounded band. A move longer
 /// than `opt.maxProjectionFactor` x the vertex's mean edge length, or one
 /// that would flip an incident face or create an angle below the
 /// degenerate threshold, is not made. Region vertices never move.
 /// \return the number of vertices moved.
 template <class MeshType>
 std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::size_t originalCount,
-                                const SharpenOptions &opt, ExtendedStats &stats) {
+                                const std::vector<char> &nearSharpEdge, const SharpenOptions &opt,
+                                ExtendedStats &stats) {
   using Scalar = typename MeshType::ScalarType;
   const VertexFaceTable vf(m);  // after subdivision
   std::size_t moved = 0;
   for (std::size_t v = 0; v < originalCount; ++v) {
-    if (zones.inRegion[v] || zones.vertexLabel[v] < 0 || vf.degree(v) == 0) continue;
-    const Plane &pl = zones.plane[v];
+    if (zones.inRegion[v] || zones.vertexLabel[v] < 0 || vf.degree(v) == 0 || !nearSharpEdge[v])
+      continue;
+    const Plane &pl = zones.support.plane[v];
     const Vec3 p = positionOf(&m.vert[v]);
     const Vec3 target = p - pl.normal * (pl.normal * (p - pl.point));
     const double step = (target - p).Norm();

@@ -4,8 +4,10 @@
 // triangles (green).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
+#include "fast_topology.h"
 #include "mesh_labels.h"
 #include "report.h"
 
@@ -43,8 +45,11 @@ std::size_t paintInteriorRedVertices(MeshType &m, MeshLabels<MeshType> &labels) 
 /// \return the number of these core red faces.
 template <class MeshType>
 std::size_t paintCoreRedFaces(MeshType &m, MeshLabels<MeshType> &labels) {
-  std::size_t count = 0;
-  for (auto &f : m.face) {
+  std::int64_t count = 0;
+  const std::int64_t nf = std::int64_t(m.face.size());
+#pragma omp parallel for schedule(static, 4096) reduction(+ : count) if (nf > kParallelMin)
+  for (std::int64_t fi = 0; fi < nf; ++fi) {
+    auto &f = m.face[fi];
     if (f.IsD()) continue;
     for (int i = 0; i < 3; ++i) {
       if (labels.vertex[f.cV(i)] == VertexLabel::Red) {
@@ -54,7 +59,7 @@ std::size_t paintCoreRedFaces(MeshType &m, MeshLabels<MeshType> &labels) {
       }
     }
   }
-  return count;
+  return std::size_t(count);
 }
 
 /// Filter 3: paint red, recursively, each triangle adjacent to a red triangle
@@ -63,10 +68,21 @@ std::size_t paintCoreRedFaces(MeshType &m, MeshLabels<MeshType> &labels) {
 template <class MeshType>
 std::size_t growRedFaces(MeshType &m, MeshLabels<MeshType> &labels) {
   using FacePointer = typename MeshType::FacePointer;
+  // The flood reaches the same faces from any order; only red faces with a
+  // smooth edge to a non-red face can spread, so only they start it.
   std::vector<FacePointer> frontier;
-  for (auto &f : m.face)
-    if (!f.IsD() && labels.face[&f] == FaceLabel::Red) frontier.push_back(&f);
-  std::size_t count = frontier.size();
+  std::size_t count = 0;
+  for (auto &f : m.face) {
+    if (f.IsD() || labels.face[&f] != FaceLabel::Red) continue;
+    ++count;
+    for (int i = 0; i < 3; ++i) {
+      FacePointer g = f.FFp(i);
+      if (g != &f && labels.edge[&f][i] == EdgeLabel::Smooth && labels.face[g] != FaceLabel::Red) {
+        frontier.push_back(&f);
+        break;
+      }
+    }
+  }
   while (!frontier.empty()) {
     FacePointer f = frontier.back();
     frontier.pop_back();
@@ -126,8 +142,12 @@ std::size_t paintChamferEdges(MeshType &m, MeshLabels<MeshType> &labels) {
 template <class MeshType>
 std::pair<std::size_t, std::size_t> paintCornerAndChamferFaces(MeshType &m,
                                                                MeshLabels<MeshType> &labels) {
-  std::size_t corners = 0, chamfers = 0;
-  for (auto &f : m.face) {
+  std::int64_t corners = 0, chamfers = 0;
+  const std::int64_t nf = std::int64_t(m.face.size());
+#pragma omp parallel for schedule(static, 4096) reduction(+ : corners, chamfers) \
+    if (nf > kParallelMin)
+  for (std::int64_t fi = 0; fi < nf; ++fi) {
+    auto &f = m.face[fi];
     if (f.IsD()) continue;
     int blue = 0;
     for (int i = 0; i < 3; ++i) blue += labels.edge[&f][i] == EdgeLabel::Chamfer;
@@ -139,7 +159,7 @@ std::pair<std::size_t, std::size_t> paintCornerAndChamferFaces(MeshType &m,
       ++chamfers;
     }
   }
-  return {corners, chamfers};
+  return {std::size_t(corners), std::size_t(chamfers)};
 }
 
 /// Runs the six filters in order.

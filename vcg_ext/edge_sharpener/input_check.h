@@ -39,7 +39,7 @@ std::size_t countNonManifoldVertices(MeshType &m) {
   }
   std::int64_t count = 0;
   const std::int64_t n = std::int64_t(nv);
-#pragma omp parallel for schedule(static, 8192) reduction(+ : count)
+#pragma omp parallel for schedule(static, 8192) reduction(+ : count) if (n > kParallelMin)
   for (std::int64_t v = 0; v < n; ++v) {
     if (firstCorner[v] == kNone) continue;
     vcg::face::Pos<FaceType> pos(&m.face[firstCorner[v] / 3], int(firstCorner[v] % 3));
@@ -82,7 +82,7 @@ std::string findInputProblem(MeshType &m) {
   std::int64_t firstNonManifold = nf;
   int misoriented = 0;
 #pragma omp parallel for schedule(static, 8192) reduction(min : firstNonManifold) \
-    reduction(max : misoriented)
+    reduction(max : misoriented) if (nf > kParallelMin)
   for (std::int64_t i = 0; i < nf; ++i) {
     auto &f = m.face[i];
     for (int j = 0; j < 3; ++j) {

@@ -41,8 +41,9 @@ enum class Placement : std::uint8_t {
   MixedConvexity,   ///< chamfer bordered by a concave and a convex side
   DegenerateRevert, ///< moved back by the degenerate-triangle cleanup
   FarFromChamfer,   ///< extended method: the planes meet farther off than their angle allows
+  CurvedSupport,    ///< extended method: the regions curve like a blend, not a sharp edge
 };
-constexpr int kPlacementCount = 9;
+constexpr int kPlacementCount = 10;
 
 const char *toString(Placement p);
 
@@ -57,6 +58,7 @@ inline const char *toString(Placement p) {
     case Placement::MixedConvexity: return "mixed_convexity";
     case Placement::DegenerateRevert: return "degenerate_revert";
     case Placement::FarFromChamfer: return "far_from_chamfer";
+    case Placement::CurvedSupport: return "curved_support";
   }
   return "unknown";
 }

@@ -69,6 +69,11 @@ struct SharpenOptions {
   /// factor above its chamfer than their angle allows
   /// (geometry.h: chamferApexHeightRatio); 0 disables the test.
   double apexHeightFactor = 1.5;
+  /// An inserted vertex stays at rest when the region next to it turns, over
+  /// the fitted neighbourhood, by more than this fraction of the angle
+  /// between the two planes: a finely sampled blend, not a sharp edge.
+  /// 0 disables the test.
+  double maxSupportSpreadRatio = 0.35;
 
   /// Optional progress callback (percent, stage name); may be null.
   vcg::CallBackPos *progress = nullptr;

@@ -43,13 +43,22 @@ std::vector<Vec3> computeSupportNormals(MeshType &m, MeshLabels<MeshType> &label
   return normal;
 }
 
+/// The plane extrapolated from the smooth region next to each original
+/// vertex (zero normal: none), and how curved that region is there.
+struct SupportPlanes {
+  std::vector<Plane> plane;
+  /// Largest angle between the plane's normal and the normals of the region
+  /// faces it was fitted to; empty when not measured (the paper's method).
+  std::vector<double> spreadRad;
+};
+
 /// The paper's support planes: through each original vertex, orthogonal to
 /// its support normal (a zero normal where no red triangle touches it).
 /// Only the vertices of chamfer and corner faces get a normal - the only
 /// planes placement reads (the sources of the inserted vertices); the others
 /// get a zero one. \pre runSixFilters() ran.
 template <class MeshType>
-std::vector<Plane> paperSupportPlanes(MeshType &m, MeshLabels<MeshType> &labels) {
+SupportPlanes paperSupportPlanes(MeshType &m, MeshLabels<MeshType> &labels) {
   std::vector<char> wanted(m.vert.size(), 0);
   for (auto &f : m.face) {
     const FaceLabel label = labels.face[&f];
@@ -57,23 +66,33 @@ std::vector<Plane> paperSupportPlanes(MeshType &m, MeshLabels<MeshType> &labels)
     for (int i = 0; i < 3; ++i) wanted[vcg::tri::Index(m, f.cV(i))] = 1;
   }
   const std::vector<Vec3> normal = computeSupportNormals(m, labels, &wanted);
-  std::vector<Plane> planes(normal.size());
-  for (std::size_t i = 0; i < planes.size(); ++i)
-    planes[i] = Plane{positionOf(&m.vert[i]), normal[i]};
-  return planes;
+  SupportPlanes support;
+  support.plane.resize(normal.size());
+  for (std::size_t i = 0; i < normal.size(); ++i)
+    support.plane[i] = Plane{positionOf(&m.vert[i]), normal[i]};
+  return support;
 }
 
 /// Where the planes put one inserted vertex, before the edge-length check.
-/// `supportPlane[v]` is the plane extrapolated from the smooth region next
-/// to original vertex v (zero normal: none).
 /// \return the outcome and, for Placement::Moved, the target in `target`.
-inline Placement proposePlacement(const InsertedVertexSource &src,
-                                  const std::vector<Plane> &supportPlane,
+inline Placement proposePlacement(const InsertedVertexSource &src, const SupportPlanes &support,
                                   const SharpenOptions &opt, Vec3 &target) {
   Plane planes[3];
   for (int i = 0; i < src.originalCount; ++i) {
-    planes[i] = supportPlane[src.original[i]];
+    planes[i] = support.plane[src.original[i]];
     if (planes[i].normal.SquaredNorm() == 0) return Placement::NoSupportPlane;
+  }
+  if (!support.spreadRad.empty() && opt.maxSupportSpreadRatio > 0) {
+    // A region that turns as much near the feature as the feature itself is
+    // a blend or a facetted curve, not the flank of a sharp edge.
+    const int pairs = src.originalCount == 2 ? 1 : 3;
+    for (int i = 0; i < pairs; ++i) {
+      const int j = (i + 1) % src.originalCount;
+      const double theta = angleBetween(planes[i].normal, planes[j].normal);
+      const double spread = std::max(support.spreadRad[src.original[i]],
+                                     support.spreadRad[src.original[j]]);
+      if (spread > opt.maxSupportSpreadRatio * theta) return Placement::CurvedSupport;
+    }
   }
   if (opt.convexityCheck) {
     const double flat = std::sin(opt.parallelAngleRad);
@@ -146,12 +165,11 @@ std::size_t enforceEdgeLength(MeshType &m, const SplitPlan &plan, MeshLabels<Mes
 /// degenerate-case fallbacks, and writes the positions into the mesh.
 /// Original vertices are never touched.
 /// \pre subdivide() ran with `plan`; `longestEdge` is the input's longest
-///      edge; `supportPlane` holds one plane per original vertex.
+///      edge; `support` holds one plane per original vertex.
 template <class MeshType>
 PlacementStats placeInsertedVertices(MeshType &m, const SplitPlan &plan,
                                      MeshLabels<MeshType> &labels, double longestEdge,
-                                     const SharpenOptions &opt,
-                                     const std::vector<Plane> &supportPlane) {
+                                     const SharpenOptions &opt, const SupportPlanes &support) {
   using Scalar = typename MeshType::ScalarType;
   PlacementStats s;
   const std::size_t n0 = plan.originalVertexCount;
@@ -159,7 +177,7 @@ PlacementStats placeInsertedVertices(MeshType &m, const SplitPlan &plan,
   for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
     insertedPos[k] = plan.inserted[k].rest;
     Vec3 target;
-    const Placement p = proposePlacement(plan.inserted[k], supportPlane, opt, target);
+    const Placement p = proposePlacement(plan.inserted[k], support, opt, target);
     if (p == Placement::Moved) insertedPos[k] = target;
     labels.placement[n0 + k] = p;
   }

@@ -2,6 +2,7 @@
 // and the subdivision that carries it out (paper, Figure 4).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -9,6 +10,7 @@
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
+#include "fast_topology.h"
 #include "mesh_labels.h"
 #include "report.h"
 
@@ -138,10 +140,103 @@ inline std::vector<std::array<std::size_t, 3>> childTriangles(const SplitFace &s
 
 }  // namespace detail
 
+namespace detail {
+
+/// One face edge of a child triangle, keyed by its vertex indices.
+struct ChildEdge {
+  std::size_t lo, hi;  ///< vertex indices, lo < hi
+  std::size_t face;    ///< the child's face index
+  int edge;            ///< edge index in the child
+  bool operator<(const ChildEdge &o) const {
+    if (lo != o.lo) return lo < o.lo;
+    if (hi != o.hi) return hi < o.hi;
+    return face != o.face ? face < o.face : edge < o.edge;
+  }
+};
+
+/// The parent's face-face adjacency before it was split, per edge.
+struct OldAdjacency {
+  std::array<std::size_t, 3> face;
+  std::array<int, 3> edge;
+};
+
+/// Face-face adjacency after the split, updated locally: only the children
+/// and the unsplit faces across the parents' unsplit edges change. Gives what
+/// a full rebuild gives, since the mesh is 2-manifold (its edges have at most
+/// two faces); falls back to a full rebuild (fast_topology.h) otherwise.
+template <class MeshType>
+void updateSplitAdjacency(MeshType &m, const SplitPlan &plan,
+                          const std::vector<std::vector<std::array<std::size_t, 3>>> &children,
+                          const std::vector<std::array<std::size_t, 3>> &parentVertices,
+                          const std::vector<OldAdjacency> &old, std::size_t firstNew) {
+  std::vector<char> split(m.face.size(), 0);
+  std::vector<ChildEdge> edges;
+  std::size_t next = firstNew;
+  for (std::size_t k = 0; k < plan.faces.size(); ++k) {
+    split[plan.faces[k].face] = 1;
+    for (std::size_t c = 0; c < children[k].size(); ++c) {
+      const std::size_t face = c == 0 ? plan.faces[k].face : next++;
+      const auto &t = children[k][c];
+      for (int j = 0; j < 3; ++j)
+        edges.push_back({std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3]), face, j});
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  // Child k's parent: to find the parent edge an unpaired child edge lies on.
+  std::vector<std::size_t> parentOf(m.face.size() - firstNew + 1);
+  next = firstNew;
+  for (std::size_t k = 0; k < plan.faces.size(); ++k)
+    for (std::size_t c = 1; c < children[k].size(); ++c) parentOf[next++ - firstNew] = k;
+  std::vector<std::size_t> splitIndex;  // face index -> k, for the parents
+  splitIndex.assign(firstNew, 0);
+  for (std::size_t k = 0; k < plan.faces.size(); ++k) splitIndex[plan.faces[k].face] = k;
+
+  auto link = [&](std::size_t f, int i, std::size_t g, int j) {
+    m.face[f].FFp(i) = &m.face[g];
+    m.face[f].FFi(i) = char(j);
+  };
+  for (std::size_t e = 0; e < edges.size();) {
+    std::size_t run = e + 1;
+    while (run < edges.size() && edges[run].lo == edges[e].lo && edges[run].hi == edges[e].hi)
+      ++run;
+    if (run - e > 2) {  // not 2-manifold: no local shortcut
+      buildFaceFace(m);
+      return;
+    }
+    const ChildEdge &a = edges[e];
+    if (run - e == 2) {
+      const ChildEdge &b = edges[e + 1];
+      link(a.face, a.edge, b.face, b.edge);
+      link(b.face, b.edge, a.face, a.edge);
+    } else {
+      // Unpaired: an unsplit edge of the parent (its old neighbour is not
+      // split, else that neighbour's child would pair it), or a boundary.
+      const std::size_t k = a.face < firstNew ? splitIndex[a.face] : parentOf[a.face - firstNew];
+      const auto &v = parentVertices[k];
+      link(a.face, a.edge, a.face, a.edge);
+      for (int i = 0; i < 3; ++i) {
+        const std::size_t p = v[i], q = v[(i + 1) % 3];
+        if (std::min(p, q) != a.lo || std::max(p, q) != a.hi) continue;
+        const std::size_t g = old[k].face[i];
+        if (g != plan.faces[k].face && !split[g]) {
+          link(a.face, a.edge, g, old[k].edge[i]);
+          link(g, old[k].edge[i], a.face, a.edge);
+        }
+        break;
+      }
+    }
+    e = run;
+  }
+}
+
+}  // namespace detail
+
 /// Stage 4: inserts the planned vertices at their rest positions and splits
 /// each chamfer face into 2 or 3 triangles and each corner face into a fan of
 /// 6, preserving orientation. Children keep the parent's label and data
-/// (colour, quality, flags); FF topology is rebuilt.
+/// (colour, quality, flags); FF topology is updated around the split faces
+/// (the same as vcg::tri::UpdateTopology::FaceFace would rebuild).
+/// \pre FF topology up to date.
 template <class MeshType>
 SubdivisionStats subdivide(MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels) {
   using Scalar = typename MeshType::ScalarType;
@@ -156,10 +251,12 @@ SubdivisionStats subdivide(MeshType &m, const SplitPlan &plan, MeshLabels<MeshTy
   }
   std::size_t extra = 0;
   std::vector<std::vector<std::array<std::size_t, 3>>> children(plan.faces.size());
+  std::vector<std::array<std::size_t, 3>> parentVertices(plan.faces.size());
   for (std::size_t k = 0; k < plan.faces.size(); ++k) {
     const auto &f = m.face[plan.faces[k].face];
     const std::array<std::size_t, 3> v{vcg::tri::Index(m, f.cV(0)), vcg::tri::Index(m, f.cV(1)),
                                        vcg::tri::Index(m, f.cV(2))};
+    parentVertices[k] = v;
     children[k] = detail::childTriangles(plan.faces[k], v, plan.originalVertexCount);
     extra += children[k].size() - 1;
     switch (children[k].size()) {
@@ -171,6 +268,15 @@ SubdivisionStats subdivide(MeshType &m, const SplitPlan &plan, MeshLabels<MeshTy
   const std::size_t firstNew = m.face.size();
   vcg::tri::Allocator<MeshType>::AddFaces(m, extra);
   s.addedFaces = extra;
+
+  std::vector<detail::OldAdjacency> old(plan.faces.size());
+  for (std::size_t k = 0; k < plan.faces.size(); ++k) {
+    const auto &f = m.face[plan.faces[k].face];
+    for (int i = 0; i < 3; ++i) {
+      old[k].face[i] = vcg::tri::Index(m, f.cFFp(i));
+      old[k].edge[i] = f.cFFi(i);
+    }
+  }
 
   std::size_t next = firstNew;
   for (std::size_t k = 0; k < plan.faces.size(); ++k) {
@@ -186,7 +292,7 @@ SubdivisionStats subdivide(MeshType &m, const SplitPlan &plan, MeshLabels<MeshTy
       for (int j = 0; j < 3; ++j) child.V(j) = &m.vert[children[k][c][j]];
     }
   }
-  vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+  detail::updateSplitAdjacency(m, plan, children, parentVertices, old, firstNew);
   return s;
 }
 

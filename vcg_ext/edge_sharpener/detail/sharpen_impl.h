@@ -35,7 +35,7 @@ double longestEdgeLength(MeshType &m) {
 
 /// Smooth-edge test, then detection by the chosen method: the paper's six
 /// filters, or the extended method's regions and zone labels.
-/// Fills zones.plane with the support plane of every original vertex (and,
+/// Fills zones.support with the support plane of every original vertex (and,
 /// for the extended method, the rest of `zones`).
 template <class MeshType>
 void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
@@ -46,7 +46,7 @@ void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
   if (opt.method == Method::Paper) {
     reportProgress(opt, 20, "Edge-Sharpener: six filters");
     report.filters = runSixFilters(m, labels);
-    zones.plane = paperSupportPlanes(m, labels);
+    zones.support = paperSupportPlanes(m, labels);
     return;
   }
   reportProgress(opt, 20, "Edge-Sharpener: feature zones");
@@ -115,9 +115,15 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
 
   detail::reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
   report.placement =
-      placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt, zones.plane);
-  if (opt.method == Method::Extended)
-    projectZoneVertices(m, zones, plan.originalVertexCount, opt, report.extended);
+      placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt, zones.support);
+  if (opt.method == Method::Extended) {
+    std::vector<char> nearSharpEdge(plan.originalVertexCount, 0);
+    for (std::size_t k = 0; k < plan.inserted.size(); ++k)
+      if (labels.placement[plan.originalVertexCount + k] == Placement::Moved)
+        for (int i = 0; i < plan.inserted[k].originalCount; ++i)
+          nearSharpEdge[plan.inserted[k].original[i]] = 1;
+    projectZoneVertices(m, zones, plan.originalVertexCount, nearSharpEdge, opt, report.extended);
+  }
 
   detail::reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
   report.cleanup = removeDegenerateTriangles(m, plan, labels, opt.degenerateAngleRad);

@@ -1,0 +1,415 @@
+#!/usr/bin/env python3
+"""Edge-Sharpener quality benchmark: the paper's Metro experiments with real remeshers.
+
+For every reference mesh (the exact generated test shapes, and every mesh in
+../shared/meshes when present) it
+  1. makes feature-insensitive remeshings with the real meshlabserver (Uniform Mesh
+     Resampling at several cell sizes, Isotropic Explicit Remeshing with features off,
+     CSG union = marching intersections, Screened Poisson from a point sampling) and the
+     feature-preserving competitor "Marching Cubes (RIMLS)" from the same points; they are
+     cached in CACHE/inputs (a MeshLab abort or time-out is cached and reported, not fatal);
+  2. sharpens each with the edge-sharpener CLI (identical to the MeshLab filter), both
+     methods (paper, extended), default multiplier and a multiplier sweep;
+  3. measures every mesh against the reference with mesh-distance --json (two-sided, Metro);
+  4. writes CACHE/results.json and, unless --no-report, docs/results.md and
+     docs/images/results-*.png (report.py).
+
+Python 3 standard library only; the figures need matplotlib (Debian python3-matplotlib)
+and are skipped with a note without it.
+
+  bench/quality/run.py --build BUILD_DIR [--fast] [--jobs N] [--cache DIR] [--refresh]
+"""
+import argparse
+import concurrent.futures
+import glob
+import json
+import math
+import os
+import subprocess
+import sys
+import threading
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+import meshlab  # noqa: E402
+
+METHODS = ("paper", "extended")
+DEFAULT_MULTIPLIER = 2.0
+SWEEP = (1.5, 2.0, 2.5, 3.0)
+GENERATED_SHAPES = ("cube", "lblock", "lblock_tilted", "wedge", "pyramid", "cross_prism",
+                    "cylinder_block", "sphere")
+POINT_SAMPLES = 100000
+
+_print_lock = threading.Lock()
+
+
+def log(*args):
+    with _print_lock:
+        print("[quality]", *args, flush=True)
+
+
+# --------------------------------------------------------------------------- inputs
+class InputSpec:
+    """One way of making a chamfered (or competitor) mesh from a reference."""
+
+    def __init__(self, kind, res_label, res_value, order):
+        self.kind = kind
+        self.res_label = res_label
+        self.res_value = res_value  # cell size as a fraction of the diagonal (or depth/grid)
+        self.order = order
+
+    @property
+    def key(self):
+        return f"{self.kind}_{self.res_label.replace('%', 'pct').replace(' ', '')}"
+
+
+INPUT_TITLES = {
+    "asis": "the reference itself",
+    "umr": "Uniform Mesh Resampling (MC)",
+    "mc": "the project's marching cubes (vcglib, exact SDF)",
+    "ier": "Isotropic Explicit Remeshing, features off",
+    "csg": "CSG intersection with itself (marching intersections)",
+    "poisson": "Screened Poisson from 100k points",
+    "rimls": "Marching Cubes (RIMLS) from 100k points",
+}
+
+
+def input_specs(fast):
+    if fast:
+        return [InputSpec("asis", "-", None, 0), InputSpec("umr", "1%", 0.01, 2),
+                InputSpec("mc", "1%", 0.01, 2.5)]
+    return [
+        InputSpec("asis", "-", None, 0),
+        InputSpec("umr", "2%", 0.02, 1),
+        InputSpec("umr", "1%", 0.01, 2),
+        InputSpec("umr", "0.5%", 0.005, 3),
+        InputSpec("mc", "1%", 0.01, 3.5),
+        InputSpec("ier", "2%", 0.02, 4),
+        InputSpec("ier", "1%", 0.01, 5),
+        InputSpec("ier", "0.5%", 0.005, 6),
+        InputSpec("csg", "1%", 0.01, 7),
+        InputSpec("poisson", "depth 7", 7, 8),
+        InputSpec("rimls", "grid 100", 100, 10),
+    ]
+
+
+def mlx_for(spec, diag):
+    if spec.kind == "umr":
+        return meshlab.script(meshlab.uniform_resampling(spec.res_value * diag, diag))
+    if spec.kind == "ier":
+        return meshlab.script(meshlab.isotropic_remeshing(spec.res_value * diag, diag))
+    if spec.kind == "csg":
+        return meshlab.script(meshlab.csg_intersection(spec.res_value * diag, diag))
+    if spec.kind == "poisson":
+        return meshlab.script(meshlab.montecarlo_sampling(POINT_SAMPLES),
+                              meshlab.screened_poisson(spec.res_value))
+    if spec.kind == "rimls":
+        return meshlab.script(meshlab.montecarlo_sampling(POINT_SAMPLES),
+                              meshlab.rimls_marching_cubes(spec.res_value))
+    raise ValueError(spec.kind)
+
+
+# --------------------------------------------------------------------------- tools
+class Tools:
+    def __init__(self, build):
+        self.build = build
+        self.cli = self._find("edge-sharpener")
+        self.distance = self._find("mesh-distance")
+        self.generator = self._find("generate-test-meshes")
+        self.server = os.path.join(build, "meshlab-prefix", "bin", "meshlabserver")
+
+    def _find(self, name):
+        for sub in ("apps", "test_meshes", "."):
+            p = os.path.join(self.build, sub, name)
+            if os.access(p, os.X_OK):
+                return p
+        sys.exit(f"bench/quality: {name} not found in {self.build} (build the project first)")
+
+
+def run_json(cmd, timeout):
+    """Runs a command printing JSON. Returns (json or None, seconds, error message)."""
+    start = time.monotonic()
+    try:
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None, time.monotonic() - start, f"time limit ({timeout} s) exceeded"
+    seconds = time.monotonic() - start
+    if p.returncode != 0:
+        err = (p.stderr.strip().splitlines() or [f"exit status {p.returncode}"])[-1]
+        if p.returncode < 0:
+            err = f"killed by signal {-p.returncode}: {err}"
+        return None, seconds, err[:200]
+    try:
+        return json.loads(p.stdout), seconds, ""
+    except json.JSONDecodeError as e:
+        return None, seconds, f"bad JSON: {e}"
+
+
+def measure(tools, mesh, reference, timeout, extra=()):
+    d, _, err = run_json([tools.distance, mesh, reference, "--json", *extra], timeout)
+    if d is None:
+        return None, err
+    return {"max": d["symmetric"]["max_percent"], "mean": d["symmetric"]["mean_percent"],
+            "rms": d["symmetric"]["rms_percent"], "max_fwd": d["forward"]["max_percent"],
+            "max_bwd": d["backward"]["max_percent"], "faces": d["a"]["faces"],
+            "vertices": d["a"]["vertices"], "diag": d["reference_diagonal"]}, ""
+
+
+# --------------------------------------------------------------------------- models
+class Model:
+    def __init__(self, name, reference, source, group, note=""):
+        self.name = name
+        self.reference = reference  # what distances are measured against
+        self.source = source  # what MeshLab remeshes (and the "as is" input)
+        self.group = group
+        self.note = note
+        self.diag = None
+
+
+def write_box_off(path, lo, hi):
+    """The sharp cube of chamfer-cube.off: the box its face planes bound."""
+    v = [(x, y, z) for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])]
+    quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    with open(path, "w") as f:
+        f.write(f"OFF\n8 12 0\n")
+        for p in v:
+            f.write("%.9g %.9g %.9g\n" % p)
+        for a, b, c, d in quads:
+            f.write(f"3 {a} {b} {c}\n3 {a} {c} {d}\n")
+
+
+def off_bbox(path):
+    with open(path) as f:
+        tokens = f.read().split()
+    assert tokens[0] == "OFF"
+    nv = int(tokens[1])
+    xs = [float(t) for t in tokens[4:4 + 3 * nv]]
+    lo = [min(xs[i::3]) for i in range(3)]
+    hi = [max(xs[i::3]) for i in range(3)]
+    return lo, hi
+
+
+def collect_models(tools, cache, shared_dir, fast, only):
+    models = []
+    gen_dir = os.path.join(cache, "generated")
+    os.makedirs(gen_dir, exist_ok=True)
+    missing = [s for s in GENERATED_SHAPES
+               if not os.path.exists(os.path.join(gen_dir, f"{s}_reference.ply"))]
+    if missing:
+        subprocess.run([tools.generator, gen_dir, "--cells", "0.01", "--shapes", ",".join(missing)],
+                       check=True, stdout=subprocess.DEVNULL)
+    for s in GENERATED_SHAPES:
+        ref = os.path.join(gen_dir, f"{s}_reference.ply")
+        note = "no sharp edges: must stay unchanged" if s == "sphere" else ""
+        models.append(Model(s, ref, ref, "generated", note))
+    if not fast and shared_dir and os.path.isdir(shared_dir):
+        for path in sorted(glob.glob(os.path.join(shared_dir, "*"))):
+            base = os.path.basename(path)
+            stem, ext = os.path.splitext(base)
+            if ext.lower() not in (".off", ".obj", ".stl", ".ply"):
+                continue
+            name = stem
+            if stem == "chamfer-cube":
+                box = os.path.join(cache, "chamfer-cube_sharp-box.off")
+                lo, hi = off_bbox(path)
+                write_box_off(box, lo, hi)
+                models.append(Model(name, box, path, "shared",
+                                    "already chamfered: reference = the box of its face planes; "
+                                    "remeshers are not applied"))
+                continue
+            note = ("a scan with rounded edges: reference = the scan itself; must not be damaged"
+                    if stem == "rocker-arm" else "")
+            models.append(Model(name, path, path, "shared", note))
+    if only:
+        models = [m for m in models if m.name in only]
+    return models
+
+
+# --------------------------------------------------------------------------- steps
+def make_input(server, model, spec, cache, refresh, timeout):
+    """Creates (or reuses) the chamfered input. Returns (path or None, info dict)."""
+    if spec.kind == "asis":
+        return model.source, {"status": "ok", "seconds": 0.0}
+    if spec.kind == "mc":  # made by generate-test-meshes with the references
+        if model.group != "generated":
+            return None, {"status": "not applied", "why": "only for the generated exact shapes"}
+        return os.path.join(cache, "generated", f"{model.name}_mc1.ply"), {"status": "ok"}
+    if model.name == "chamfer-cube":
+        return None, {"status": "not applied", "why": "already chamfered: only measured as is"}
+    key = f"{model.name}__{spec.key}"
+    out = os.path.join(cache, "inputs", key + ".ply")
+    status_path = os.path.join(cache, "inputs", key + ".json")
+    if not refresh and os.path.exists(status_path):
+        with open(status_path) as f:
+            info = json.load(f)
+        if info["status"] != "ok" or os.path.exists(out):
+            return (out if info["status"] == "ok" else None), info
+    if server is None:
+        return None, {"status": "skipped", "why": "meshlabserver not available"}
+    inputs = [model.source, model.source] if spec.kind == "csg" else [model.source]
+    workdir = os.path.join(cache, "work", key)
+    ok, seconds, why = server.run(inputs, out, mlx_for(spec, model.diag), workdir, timeout)
+    if not ok and ("no output" in why or "empty mesh" in why):  # seen once in a while: retry
+        ok, seconds, why = server.run(inputs, out, mlx_for(spec, model.diag), workdir, timeout)
+    info = {"status": "ok" if ok else "failed", "seconds": round(seconds, 2)}
+    if not ok:
+        info["why"] = why
+        log(f"{key}: MeshLab step failed ({why}); skipped")
+    else:
+        log(f"{key}: made in {seconds:.1f} s")
+    os.makedirs(os.path.dirname(status_path), exist_ok=True)
+    with open(status_path, "w") as f:
+        json.dump(info, f)
+    return (out if ok else None), info
+
+
+def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cache, timeout):
+    key = f"{model.name}__{spec.key}__{method}_m{mult:g}"
+    out = os.path.join(cache, "outputs", key + ".ply")
+    row = {"method": method, "multiplier": mult}
+    cmd = [tools.cli, in_path, out, "--method", method, "--multiplier", str(mult), "--json", "-q"]
+    rep, wall, err = run_json(cmd, timeout)
+    if rep is None:
+        row.update(status="sharpen failed", why=err)
+        log(f"{key}: sharpening failed: {err}")
+        return row
+    row["seconds"] = rep.get("seconds", wall)
+    row["chamfer_edges"] = rep["filters"]["chamfer_edges"]
+    row["corner_faces"] = rep["filters"]["corner_faces"]
+    row["moved"] = rep["placement"]["moved"]
+    row["fallbacks"] = rep["placement"]["fallbacks"]
+    row["geometry_changed"] = rep.get("geometry_changed", True)
+    d, err = measure(tools, out, model.reference, timeout)
+    if d is None:
+        row.update(status="measure failed", why=err)
+        return row
+    row["after"] = d
+    row["status"] = "ok"
+    if spec.kind == "asis" or model.name in ("sphere", "rocker-arm"):
+        # How much the sharpener changed its input (unchanged-ness of smooth meshes).
+        c, _ = measure(tools, out, in_path, timeout)
+        if c is not None:
+            # in % of the reference's diagonal, like every other number
+            scale = c["diag"] / in_dist["diag"] if in_dist["diag"] else 1.0
+            row["change_max"] = c["max"] * scale
+            row["change_rms"] = c["rms"] * scale
+    return row
+
+
+def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout):
+    case = {"model": model.name, "group": model.group, "input": spec.kind,
+            "input_title": INPUT_TITLES[spec.kind], "resolution": spec.res_label,
+            "res_value": spec.res_value, "order": spec.order, "make": info, "runs": []}
+    if in_path is None:
+        return case
+    d, err = measure(tools, in_path, model.reference, timeout)
+    if d is None:
+        case["make"] = dict(info, status="failed", why=f"input not measurable: {err}")
+        return case
+    case["before"] = d
+    for method in METHODS:
+        for mult in multipliers:
+            case["runs"].append(sharpen_and_measure(tools, model, spec, in_path, d, method, mult,
+                                                    cache, timeout))
+    return case
+
+
+def diagonal(tools, path):
+    d, err = measure(tools, path, path, 300, extra=("--samples", "4"))
+    if d is None:
+        raise RuntimeError(f"{path}: {err}")
+    return d["diag"]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default=os.path.join(SOURCE, "build"), help="build directory")
+    ap.add_argument("--cache", help="cache/work directory (default BUILD/quality-cache)")
+    ap.add_argument("--shared", default=os.path.join(SOURCE, "..", "shared", "meshes"),
+                    help="reference meshes (skipped when absent)")
+    ap.add_argument("--fast", action="store_true",
+                    help="generated shapes only, UMR 1%% only, multiplier 2 (the CTest subset)")
+    ap.add_argument("--models", help="comma-separated model names to run (default all)")
+    ap.add_argument("--jobs", type=int, default=2, help="parallel sharpen/measure jobs")
+    ap.add_argument("--timeout", type=int, default=600, help="time limit of each step, seconds")
+    ap.add_argument("--refresh", action="store_true", help="remake the cached MeshLab inputs")
+    ap.add_argument("--results", help="results JSON (default CACHE/results.json)")
+    ap.add_argument("--no-report", action="store_true", help="do not write docs/results.md")
+    ap.add_argument("--report-only", action="store_true",
+                    help="only rewrite docs/results.md and the figures from the results JSON")
+    ap.add_argument("--docs", default=os.path.join(SOURCE, "docs"), help="docs directory")
+    args = ap.parse_args()
+
+    build = os.path.abspath(args.build)
+    cache = os.path.abspath(args.cache or os.path.join(build, "quality-cache"))
+    os.makedirs(os.path.join(cache, "outputs"), exist_ok=True)
+    tools = Tools(build)
+    server = meshlab.Server(tools.server, os.path.join(cache, "home"))
+    if not server.available():
+        log(f"meshlabserver not available ({tools.server}, xvfb-run): MeshLab inputs skipped")
+        server = None
+
+    out = args.results or os.path.join(cache, "results.json")
+    if args.report_only:
+        import report
+        with open(out) as f:
+            report.write(json.load(f), tools, cache, args.docs)
+        return
+
+    only = set(args.models.split(",")) if args.models else None
+    models = collect_models(tools, cache, os.path.abspath(args.shared), args.fast, only)
+    specs = input_specs(args.fast)
+    started = time.monotonic()
+
+    # (a) MeshLab inputs, one at a time (two Xvfb servers would race for a display).
+    plan = []
+    for model in models:
+        model.diag = diagonal(tools, model.reference)
+        for spec in specs:
+            in_path, info = make_input(server, model, spec, cache, args.refresh, args.timeout)
+            mults = [DEFAULT_MULTIPLIER]
+            if not args.fast and spec.kind in ("umr", "ier") and spec.res_label == "1%":
+                mults = list(SWEEP)
+            plan.append((model, spec, in_path, info, mults))
+    log(f"inputs ready after {time.monotonic() - started:.0f} s; sharpening and measuring "
+        f"{sum(1 for p in plan if p[2])} inputs")
+
+    # (b, c) sharpen + measure, in parallel.
+    cases = []
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        futures = [pool.submit(run_case, tools, m, s, p, i, cache, mults, args.timeout)
+                   for m, s, p, i, mults in plan]
+        for fut in futures:
+            cases.append(fut.result())
+    notes = {m.name: m.note for m in models if m.note}
+    diags = {m.name: m.diag for m in models}
+    results = {"generated_at": time.strftime("%Y-%m-%d %H:%M:%S"),
+               "fast": args.fast, "seconds": round(time.monotonic() - started, 1),
+               "methods": list(METHODS), "default_multiplier": DEFAULT_MULTIPLIER,
+               "sweep": list(SWEEP), "notes": notes, "diagonals": diags, "cases": cases,
+               "git": _git_describe()}
+    with open(out, "w") as f:
+        json.dump(results, f, indent=1)
+    log(f"results: {out} ({results['seconds']:.0f} s)")
+
+    if not args.no_report:
+        import report
+        report.write(results, tools, cache, args.docs)
+
+
+def _git_describe():
+    try:
+        rev = subprocess.run(["git", "-C", SOURCE, "rev-parse", "--short", "HEAD"],
+                             capture_output=True, text=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", SOURCE, "status", "--porcelain", "--", "vcg_ext"],
+                               capture_output=True, text=True).stdout.strip()
+        return rev + (" + uncommitted vcg_ext changes" if dirty else "")
+    except OSError:
+        return "?"
+
+
+if __name__ == "__main__":
+    main()

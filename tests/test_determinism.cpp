@@ -1,0 +1,239 @@
+// The output of the core does not depend on the OpenMP thread count, and the
+// fast face-face adjacency (fast_topology.h, and its local update after the
+// subdivision) is the one vcglib's UpdateTopology::FaceFace builds.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "edge_sharpener/edge_sharpener.h"
+#include "edge_sharpener/fast_topology.h"
+#include "edge_sharpener/mesh_types.h"
+#include "test_meshes/shapes.h"
+
+namespace es = edge_sharpener;
+namespace shapes = edge_sharpener::test_meshes;
+
+namespace {
+
+/// Restores the thread count on scope exit.
+class ThreadCount {
+ public:
+  explicit ThreadCount(int n) {
+#ifdef _OPENMP
+    saved_ = omp_get_max_threads();
+    omp_set_num_threads(n);
+#else
+    (void)n;
+#endif
+  }
+  ~ThreadCount() {
+#ifdef _OPENMP
+    omp_set_num_threads(saved_);
+#endif
+  }
+
+ private:
+  int saved_ = 1;
+};
+
+/// A marching-cubes mesh of `shape` with about `faces` faces (the face count
+/// grows as 1/cell^2; calibrated on a coarse grid). Large enough meshes run
+/// the parallel loops on several threads (fast_topology.h: kParallelMin).
+const es::Mesh &inputMesh(const std::string &shape, double faces) {
+  static std::map<std::string, es::Mesh> cache;
+  const std::string key = shape + "@" + std::to_string(faces);
+  auto it = cache.find(key);
+  if (it == cache.end()) {
+    it = cache.emplace(std::piecewise_construct, std::forward_as_tuple(key), std::tuple<>()).first;
+    const shapes::Shape &s = shapes::shapeByName(shape);
+    const double h0 = shapes::cellSizeForDiagonalFraction(s, 0.02);
+    es::Mesh coarse;
+    shapes::marchingCubes(s, h0, coarse);
+    shapes::marchingCubes(s, h0 * std::sqrt(coarse.fn / faces), it->second);
+  }
+  return it->second;
+}
+
+void copyMesh(es::Mesh &dst, const es::Mesh &src) {
+  vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(dst, const_cast<es::Mesh &>(src));
+}
+
+/// Everything the output consists of, bit for bit.
+struct Snapshot {
+  std::vector<float> coords, faceNormals, vertexNormals;
+  std::vector<std::size_t> faces;
+  std::vector<unsigned> colors, flags;
+  bool operator==(const Snapshot &o) const {
+    return coords == o.coords && faceNormals == o.faceNormals && vertexNormals == o.vertexNormals &&
+           faces == o.faces && colors == o.colors && flags == o.flags;
+  }
+};
+
+Snapshot snapshot(es::Mesh &m) {
+  Snapshot s;
+  for (auto &v : m.vert)
+    for (int k = 0; k < 3; ++k) {
+      s.coords.push_back(v.P()[k]);
+      s.vertexNormals.push_back(v.N()[k]);
+    }
+  for (auto &v : m.vert) s.colors.push_back(*reinterpret_cast<const unsigned *>(&v.C()));
+  for (auto &f : m.face) {
+    for (int k = 0; k < 3; ++k) {
+      s.faces.push_back(vcg::tri::Index(m, f.V(k)));
+      s.faceNormals.push_back(f.N()[k]);
+    }
+    s.colors.push_back(*reinterpret_cast<const unsigned *>(&f.C()));
+    s.flags.push_back(f.Flags());
+  }
+  return s;
+}
+
+struct Outcome {
+  Snapshot mesh;
+  es::SharpenReport report;
+};
+
+Outcome runWithThreads(const es::Mesh &input, int threads, const es::SharpenOptions &opt,
+                       bool detectOnly) {
+  ThreadCount scope(threads);
+  Outcome r;
+  es::Mesh m;
+  copyMesh(m, input);
+  r.report = detectOnly ? es::detectChamfers(m, opt) : es::sharpen(m, opt);
+  r.mesh = snapshot(m);
+  return r;
+}
+
+/// The FF adjacency as (face index, edge index) per face edge.
+std::vector<std::size_t> adjacency(es::Mesh &m) {
+  std::vector<std::size_t> a;
+  for (auto &f : m.face) {
+    if (f.IsD()) continue;
+    for (int i = 0; i < 3; ++i) {
+      a.push_back(vcg::tri::Index(m, f.FFp(i)));
+      a.push_back(std::size_t(f.FFi(i)));
+    }
+  }
+  return a;
+}
+
+struct Case {
+  std::string shape;
+  double faces;
+};
+
+class DeterminismTest : public ::testing::TestWithParam<Case> {};
+
+TEST_P(DeterminismTest, SharpenIsIdenticalForAnyThreadCount) {
+  const es::Mesh &input = inputMesh(GetParam().shape, GetParam().faces);
+  ASSERT_GT(input.fn, GetParam().faces / 2);
+  for (const es::Method method : {es::Method::Paper, es::Method::Extended}) {
+    es::SharpenOptions opt;
+    opt.method = method;
+    opt.colorize = true;
+    const Outcome one = runWithThreads(input, 1, opt, false);
+    ASSERT_GT(one.report.subdivision.insertedVertices, 0u) << "nothing was sharpened";
+    for (const int threads : {2, 3, 8}) {
+      const Outcome other = runWithThreads(input, threads, opt, false);
+      EXPECT_TRUE(one.mesh == other.mesh) << threads << " threads, method " << int(method);
+      EXPECT_EQ(one.report.smooth.meanAngleRad, other.report.smooth.meanAngleRad);
+      EXPECT_EQ(one.report.smooth.smoothEdges, other.report.smooth.smoothEdges);
+      EXPECT_EQ(one.report.outputVertices, other.report.outputVertices);
+      EXPECT_EQ(one.report.outputFaces, other.report.outputFaces);
+      EXPECT_EQ(one.report.placement.maxDisplacement, other.report.placement.maxDisplacement);
+    }
+  }
+}
+
+TEST_P(DeterminismTest, DetectChamfersIsIdenticalForAnyThreadCount) {
+  const es::Mesh &input = inputMesh(GetParam().shape, GetParam().faces);
+  const Outcome one = runWithThreads(input, 1, {}, true);
+  for (const int threads : {2, 3}) {
+    const Outcome other = runWithThreads(input, threads, {}, true);
+    EXPECT_TRUE(one.mesh == other.mesh) << threads << " threads";
+    EXPECT_EQ(one.report.filters.chamferEdges, other.report.filters.chamferEdges);
+  }
+}
+
+TEST_P(DeterminismTest, FastFaceFaceEqualsVcglibForAnyThreadCount) {
+  es::Mesh m;
+  copyMesh(m, inputMesh(GetParam().shape, GetParam().faces));
+  vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m);
+  const std::vector<std::size_t> expected = adjacency(m);
+  for (const int threads : {1, 2, 3}) {
+    ThreadCount scope(threads);
+    for (auto &f : m.face)
+      for (int i = 0; i < 3; ++i) f.FFp(i) = nullptr;
+    es::buildFaceFace(m);
+    EXPECT_EQ(adjacency(m), expected) << threads << " threads";
+  }
+}
+
+TEST_P(DeterminismTest, LocalAdjacencyUpdateAfterSubdivisionEqualsFullRebuild) {
+  es::Mesh m;
+  copyMesh(m, inputMesh(GetParam().shape, GetParam().faces));
+  ASSERT_EQ(es::findInputProblem(m), "");
+  es::MeshLabels<es::Mesh> labels(m);
+  es::computeFaceNormals(m, labels);
+  es::labelSmoothEdges(m, labels, 2.0);
+  es::runSixFilters(m, labels);
+  const es::SplitPlan plan = es::planSplits(m, labels);
+  ASSERT_FALSE(plan.faces.empty());
+  es::subdivide(m, plan, labels);
+  const std::vector<std::size_t> local = adjacency(m);
+  vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m);
+  EXPECT_EQ(local, adjacency(m));
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, DeterminismTest,
+                         ::testing::Values(Case{"lblock_tilted", 150000}, Case{"cube", 80000},
+                                           Case{"pyramid", 80000}, Case{"cross_prism", 80000},
+                                           Case{"lblock", 10000}),
+                         [](const ::testing::TestParamInfo<Case> &info) {
+                           return info.param.shape + "_" + std::to_string(info.index);
+                         });
+
+TEST(Determinism, OpenBoundaryAndNonManifoldRingsMatchVcglib) {
+  // A fan of three faces on one edge (non-manifold) plus an open strip: the
+  // boundary edges point at themselves, the ring visits every face once.
+  es::Mesh m;
+  auto v = vcg::tri::Allocator<es::Mesh>::AddVertices(m, 6);
+  const float p[6][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {2, 1, 0}};
+  for (int i = 0; i < 6; ++i) v[i].P() = vcg::Point3f(p[i][0], p[i][1], p[i][2]);
+  const int t[5][3] = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {1, 5, 2}, {2, 5, 4}};
+  auto f = vcg::tri::Allocator<es::Mesh>::AddFaces(m, 5);
+  for (int i = 0; i < 5; ++i)
+    for (int k = 0; k < 3; ++k) f[i].V(k) = &m.vert[t[i][k]];
+  es::buildFaceFace(m);
+  int ringEdges = 0;
+  for (auto &face : m.face)
+    for (int i = 0; i < 3; ++i) {
+      if (face.FFp(i) == &face) {
+        EXPECT_EQ(face.FFi(i), i);
+        continue;
+      }
+      // Following the ring from any face edge comes back to it.
+      auto *g = face.FFp(i);
+      int gi = face.FFi(i), steps = 1;
+      while (g != &face && steps < 10) {
+        auto *h = g->FFp(gi);
+        gi = g->FFi(gi);
+        g = h;
+        ++steps;
+      }
+      EXPECT_EQ(g, &face);
+      if (steps == 3) ++ringEdges;
+    }
+  EXPECT_EQ(ringEdges, 3);  // the three faces on edge 0-1
+  EXPECT_NE(es::findInputProblem(m).find("non-manifold edges"), std::string::npos);
+}
+
+}  // namespace
