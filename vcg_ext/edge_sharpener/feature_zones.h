@@ -345,7 +345,8 @@ std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::siz
     const Vec3 p = positionOf(&m.vert[v]);
     const Vec3 target = p - pl.normal * (pl.normal * (p - pl.point));
     const double step = (target - p).Norm();
-    if (step == 0) continue;
+    // A move below the mesh's float resolution changes nothing: not counted.
+    if (vcg::Point3<Scalar>::Construct(target) == m.vert[v].cP()) continue;
     double edgeSum = 0;
     int edgeCount = 0;
     detail::forEachNeighbour(m, vf, v, [&](std::size_t u) {
