@@ -297,6 +297,49 @@ void buildFromPolygons(const PolygonMesh &p, MeshType &m) {
     }
 }
 
+/// Checks the PLY header line by line before vcglib parses it: vcglib's
+/// parser dereferences missing tokens (an "element" line without a count
+/// crashes it). \throws std::runtime_error naming the bad line.
+inline void checkPlyHeader(const std::string &path) {
+  std::ifstream file(path, std::ios::binary);
+  std::string line;
+  const auto tokens = [](const std::string &l) {
+    std::vector<std::string> out;
+    std::size_t i = 0;
+    while (i < l.size()) {
+      while (i < l.size() && std::strchr(" \t\r\n", l[i])) ++i;
+      const std::size_t start = i;
+      while (i < l.size() && !std::strchr(" \t\r\n", l[i])) ++i;
+      if (i > start) out.push_back(l.substr(start, i - start));
+    }
+    return out;
+  };
+  const auto isCount = [](const std::string &t) {
+    return !t.empty() && t.size() < 12 &&
+           std::all_of(t.begin(), t.end(), [](unsigned char c) { return std::isdigit(c); });
+  };
+  constexpr int kMaxHeaderLines = 10000;
+  for (int n = 0; n < kMaxHeaderLines && std::getline(file, line); ++n) {
+    const std::vector<std::string> t = tokens(line);
+    const std::string where = "PLY header line " + std::to_string(n + 1);
+    if (n == 0) {
+      if (t.size() != 1 || t[0] != "ply") throw std::runtime_error("not a PLY file");
+      continue;
+    }
+    if (t.empty()) throw std::runtime_error(where + " is empty");
+    const std::string &key = t[0];
+    if (key == "end_header") return;
+    if (key == "comment" || key == "obj_info") continue;
+    if (key == "format" && t.size() == 3) continue;
+    if (key == "element" && t.size() == 3 && isCount(t[2])) continue;
+    if (key == "property" && ((t.size() == 3 && t[1] != "list") ||
+                              (t.size() == 5 && t[1] == "list")))
+      continue;
+    throw std::runtime_error(where + " is malformed");
+  }
+  throw std::runtime_error("PLY header has no end_header");
+}
+
 template <class MeshType>
 void buildFromSoup(const StlSoup &soup, MeshType &m) {
   const std::size_t triangles = soup.coords.size() / 9;
@@ -339,6 +382,7 @@ void loadMesh(const std::string &path, MeshType &m) {
       const std::string text((std::istreambuf_iterator<char>(file)), {});
       detail::buildFromPolygons(ext == "off" ? detail::parseOff(text) : detail::parseObj(text), m);
     } else {
+      detail::checkPlyHeader(path);
       int mask = 0;
       using Importer = vcg::tri::io::Importer<MeshType>;
       const int err = Importer::Open(m, path.c_str(), mask);

@@ -40,6 +40,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
       {"placement", placement},
       {"cleanup",
        {{"degenerate_found", r.cleanup.degenerateFound}, {"collapses", r.cleanup.collapses},
+        {"removed_faces", r.cleanup.removedFaces},
         {"flips", r.cleanup.flips}, {"reverted", r.cleanup.reverted},
         {"remaining", r.cleanup.remaining}, {"inherited", r.cleanup.inherited}}},
   };

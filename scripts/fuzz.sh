@@ -3,7 +3,7 @@
 # build-fuzz/ (or $EDGE_SHARPENER_FUZZ_DIR).
 #   scripts/fuzz.sh build                  configure + build only
 #   scripts/fuzz.sh run SECONDS [TARGET..] fuzz each target SECONDS (default: both)
-#   scripts/fuzz.sh smoke                  30 s per target (the test suite's run)
+#   scripts/fuzz.sh smoke                  fixed seed and input count per target (the test suite's run)
 #   scripts/fuzz.sh merge                  minimise the working corpus into
 #                                          tests/reliability/fuzz_corpus/ (keeps old entries)
 # Seeds: tests/reliability/fuzz_corpus/TARGET/ and tests/reliability/crashes/TARGET/
@@ -25,7 +25,13 @@ do_build() {
 }
 
 run_target() {
-  local target=$1 seconds=$2
+  local target=$1 seconds=$2 extra=()
+  # The smoke run is reproducible: fixed seed and a fixed number of inputs
+  # (fresh working corpus), so CI explores exactly what was checked here.
+  if [[ $smoke == 1 ]]; then
+    extra=(-seed=1 "-runs=${SMOKE_RUNS[$target]}")
+    rm -rf "$build/corpus/$target"
+  fi
   local corpus="$build/corpus/$target" artifacts="$build/artifacts/$target/"
   mkdir -p "$corpus" "$artifacts"
   local seeds=("$data/fuzz_corpus/$target")
@@ -34,6 +40,7 @@ run_target() {
   # -rss_limit_mb: a huge declared element count must not exhaust the machine.
   "$build/$target" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -timeout=20 \
     -rss_limit_mb=2048 -max_len=8192 -artifact_prefix="$artifacts" -print_final_stats=1 \
+    "${extra[@]}" \
     >"$out" 2>&1 || rc=$?
   local execs
   execs=$(grep -m1 'stat::number_of_executed_units' "$out" | awk '{print $2}')
@@ -49,7 +56,12 @@ cmd=${1:-smoke}
 case $cmd in
   build) do_build ;;
   run | smoke)
-    seconds=30
+    seconds=120  # smoke: a cap; the run count below ends it first
+    smoke=0
+    if [[ $cmd == smoke ]]; then
+      smoke=1
+      declare -A SMOKE_RUNS=([fuzz_read_mesh]=2000 [fuzz_core_soup]=100000)
+    fi
     if [[ $cmd == run ]]; then
       seconds=${2:?usage: fuzz.sh run SECONDS [TARGET...]}
       shift 2

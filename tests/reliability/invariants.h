@@ -134,7 +134,7 @@ std::string sharpenProblem(M &input, M &output, const edge_sharpener::SharpenRep
     return "report's output counts differ from the output";
   if (r.outputVertices != r.inputVertices + r.subdivision.insertedVertices - r.cleanup.collapses)
     return "vertex count arithmetic does not hold";
-  if (r.outputFaces != r.inputFaces + r.subdivision.addedFaces - 2 * r.cleanup.collapses)
+  if (r.outputFaces != r.inputFaces + r.subdivision.addedFaces - r.cleanup.removedFaces)
     return "face count arithmetic does not hold";
   if (r.cleanup.remaining != 0)
     return "cleanup left " + std::to_string(r.cleanup.remaining) + " degenerate faces";

@@ -56,10 +56,11 @@ int shortestEdgeIndex(const FaceType &f) {
 /// tiny next to its longest) when an endpoint is an inserted vertex: the
 /// inserted vertex is removed and merged into the other endpoint, which keeps
 /// its position. Refused when it would break manifoldness (link condition) or
-/// flip a surrounding face. \return true if collapsed.
+/// flip a surrounding face. \return true if collapsed; `removedFaces` then
+/// holds the number of faces deleted (2, or 1 on a border edge).
 template <class MeshType>
 bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan &plan,
-                    double angleRad) {
+                    double angleRad, int &removedFaces) {
   using FaceType = typename MeshType::FaceType;
   using Pos = vcg::face::Pos<FaceType>;
   const int z = detail::shortestEdgeIndex(f);
@@ -99,6 +100,7 @@ bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan
     const Vec3 after = detail::triangleNormal(r[0], r[1], r[2]);
     if (!(before * after > 0)) return false;
   }
+  removedFaces = cf->FFp(cz) == cf ? 1 : 2;  // a border edge has one face
   vcg::face::FFEdgeCollapse(m, *cf, cz);
   return true;
 }
@@ -178,8 +180,10 @@ CleanupStats removeDegenerateTriangles(MeshType &m, const SplitPlan &plan,
     for (const std::size_t i : children) {
       auto &f = m.face[i];
       if (!degenerate(f)) continue;
-      if (collapseNeedle(m, f, plan, angleRad)) {
+      int removed = 0;
+      if (collapseNeedle(m, f, plan, angleRad, removed)) {
         ++s.collapses;
+        s.removedFaces += std::size_t(removed);
       } else if (flipCap(f, labels)) {
         ++s.flips;
       } else if (std::size_t n = revertInsertedVertices(m, f, plan, labels)) {

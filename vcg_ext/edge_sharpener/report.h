@@ -60,6 +60,7 @@ struct PlacementStats {
 struct CleanupStats {
   std::size_t degenerateFound = 0;  ///< new faces below the angle threshold before cleanup
   std::size_t collapses = 0;        ///< edges collapsed between coinciding new vertices
+  std::size_t removedFaces = 0;     ///< faces deleted by those collapses (2 each, 1 on a border)
   std::size_t flips = 0;            ///< edges flipped inside split faces
   std::size_t reverted = 0;         ///< inserted vertices moved back (counted in placement too)
   std::size_t remaining = 0;   ///< faces with a moved vertex still below the threshold
