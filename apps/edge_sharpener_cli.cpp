@@ -62,16 +62,10 @@ int run(const CliOptions &cli) {
     vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(original, m);
   }
 
-  es::SharpenOptions opt;
+  es::SharpenOptions opt = cli.extended;  // carries the extended method's tuning flags
   opt.smoothMultiplier = cli.multiplier;
   opt.method = cli.method == "extended" ? es::Method::Extended : es::Method::Paper;
-  opt.minRegionDepth = cli.extended.minRegionDepth;
-  opt.supportRings = cli.extended.supportRings;
-  opt.maxProjectionFactor = cli.extended.maxProjectionFactor;
-  opt.apexHeightFactor = cli.extended.apexHeightFactor;
   opt.openRegionContacts = !cli.keepContacts;
-  opt.maxSupportSpreadRatio = cli.extended.maxSupportSpreadRatio;
-  opt.extendedEdgeLengthFactor = cli.extended.extendedEdgeLengthFactor;
   opt.edgeLengthCheck = !cli.noLengthCheck;
   opt.convexityCheck = !cli.noConvexityCheck;
   opt.degenerateAngleRad = cli.degenerateAngleDeg * M_PI / 180.0;

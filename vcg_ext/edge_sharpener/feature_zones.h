@@ -128,11 +128,11 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
     if (maxDepth[r] >= minDepth) renumber[r] = kept++;
   stats.regions = std::size_t(kept);
   stats.corridors = std::size_t(regions - kept);
-  for (int &r : zones.faceRegion) {
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    int &r = zones.faceRegion[f];
     if (r != kZone) r = renumber[r];
-    stats.zoneFaces += r == kZone;
+    stats.zoneFaces += r == kZone && !m.face[f].IsD();
   }
-  stats.zoneFaces -= m.face.size() - std::size_t(m.fn);  // deleted faces are not zone
 }
 
 /// Returns to the zone every region face with a vertex shared by two or more
