@@ -137,3 +137,63 @@ TEST(TriangleAngles, EquilateralAndDegenerate) {
   EXPECT_NEAR(es::maxTriangleAngle(a, Vec3(2, 0, 0), b), M_PI, 1e-12);
   EXPECT_NEAR(es::cornerAngle(a, b, Vec3(0, 1, 0)), 90 * kDeg, 1e-12);
 }
+
+TEST(IntermediatePlane, NormalOnTheArcBetweenFlanksIsBetween) {
+  const Vec3 top(0, 0, 1), side(1, 0, 0);
+  EXPECT_TRUE(es::normalBetween(top, side, unit(Vec3(1, 0, 1)), 1 * kDeg));
+  EXPECT_TRUE(es::normalBetween(top, side, unit(Vec3(1, 0, 3)), 1 * kDeg));
+  // Off the arc: the third face of a cube corner, or a facet turned sideways.
+  EXPECT_FALSE(es::normalBetween(top, side, Vec3(0, 1, 0), 10 * kDeg));
+  EXPECT_FALSE(es::normalBetween(top, side, unit(Vec3(1, 0.8, 1)), 10 * kDeg));
+  EXPECT_TRUE(es::normalBetween(top, side, unit(Vec3(1, 0.1, 1)), 10 * kDeg));
+}
+
+TEST(IntermediatePlane, PassageIsMeasuredOnTheOuterSide) {
+  // Convex edge of top z = 1 and side x = 1; a 45-degree facet through
+  // (1, 0, 0.9) and (0.9, 0, 1) lies between them.
+  const Vec3 sum(1, 0, 1);
+  const Plane facet{Vec3(0.95, 0, 0.95), unit(Vec3(1, 0, 1))};
+  const Vec3 rest(0.95, 0, 0.95), apex(1, 0, 1);
+  EXPECT_NEAR(es::passageBeyondPlane(sum, facet, rest, apex), std::sqrt(2.0) * 0.05, 1e-12);
+  // A point moved outward that stays on the inner side does not pass.
+  EXPECT_LT(es::passageBeyondPlane(sum, facet, Vec3(0.95, 0, 0.9), Vec3(0.97, 0, 0.92)), 0);
+  // Concave: the same geometry seen from inside (normals flipped), the
+  // apex moves inward and passes the facet on its inner side.
+  const Plane inner{facet.point, -facet.normal};
+  EXPECT_NEAR(es::passageBeyondPlane(-sum, inner, rest, apex), std::sqrt(2.0) * 0.05, 1e-12);
+}
+
+TEST(Bend, CylinderCurvatureAcrossItsAxisOnly) {
+  // Faces of a cylinder of radius R around the y axis, near its top (normal
+  // +z): normals turn with x, not with y.
+  const double radius = 2.0;
+  es::CrossScatter3 turn, extent;
+  const Vec3 point(0, 0, radius), normal(0, 0, 1);
+  for (int i = -3; i <= 3; ++i)
+    for (int j = -3; j <= 3; ++j) {
+      const double angle = 0.02 * i;
+      const Vec3 n(std::sin(angle), 0, std::cos(angle));
+      const Vec3 c = n * radius + Vec3(0, 0.04 * j, 0);
+      turn.add(n - normal, c - point, 1.0);
+      extent.add(c - point, c - point, 1.0);
+    }
+  const double d = 0.3;
+  // A circle of curvature 1/R leaves its tangent by about d^2 / (2R).
+  EXPECT_NEAR(es::extrapolationBend(turn, extent, Vec3(1, 0, 0), d), d * d / (2 * radius),
+              0.02 * d * d / (2 * radius));
+  EXPECT_NEAR(es::extrapolationBend(turn, extent, Vec3(0, 1, 0), d), 0.0, 1e-6);
+}
+
+TEST(Bend, UncorrelatedNormalNoiseIsNotCurvature) {
+  // A flat patch whose face normals alternate +-5 degrees (marching-cubes
+  // staircase): the noise does not grow with position.
+  es::CrossScatter3 turn, extent;
+  for (int i = -4; i <= 4; ++i) {
+    const double tilt = (i % 2 == 0 ? 1 : -1) * 5 * kDeg;
+    const Vec3 n(std::sin(tilt), 0, std::cos(tilt));
+    const Vec3 c(0.05 * i, 0, 0);
+    turn.add(n - Vec3(0, 0, 1), c, 1.0);
+    extent.add(c, c, 1.0);
+  }
+  EXPECT_LT(es::extrapolationBend(turn, extent, Vec3(1, 0, 0), 0.3), 0.002);
+}

@@ -123,17 +123,19 @@ INSTANTIATE_TEST_SUITE_P(
 
 // The extended method on the same inputs. Thresholds are about 80% of the
 // measured reductions (max / RMS): cube 2% x6.4/x20.8, 1% x19.1/x25.2;
-// lblock 2% x3.2/x13.8, 1% x11.7/x16.3; lblock_tilted 2% x2.2/x5.3; wedge 2%
-// x4.5/x8.6; pyramid 2% x4.6/x9.9; cross_prism 2% x2.2/x3.4; cylinder_block 2%
-// x3.5/x5.9.
+// lblock 2% x3.2/x13.8, 1% x11.7/x16.3; lblock_tilted 2% x1.65/x4.9 (x2.2/x5.3
+// before the bend test of placement.h, which at this coarse resolution takes
+// the staircase of one flank for curvature: a known cost of fandisk's gain);
+// wedge 2% x4.5/x8.6; pyramid 2% x4.6/x9.9; cross_prism 2% x2.2/x3.2;
+// cylinder_block 2% x3.5/x5.9.
 constexpr es::Method kExt = es::Method::Extended;
 INSTANTIATE_TEST_SUITE_P(
     MarchingCubesExtended, SharpenShapes,
     ::testing::Values(Case{"cube", 0.02, 5.0, 16.0, kExt}, Case{"cube", 0.01, 15.0, 20.0, kExt},
                       Case{"lblock", 0.02, 2.5, 11.0, kExt}, Case{"lblock", 0.01, 9.0, 13.0, kExt},
-                      Case{"lblock_tilted", 0.02, 1.7, 4.2, kExt},
+                      Case{"lblock_tilted", 0.02, 1.35, 3.9, kExt},
                       Case{"wedge", 0.02, 3.6, 6.8, kExt}, Case{"pyramid", 0.02, 3.6, 7.9, kExt},
-                      Case{"cross_prism", 0.02, 1.75, 2.7, kExt},
+                      Case{"cross_prism", 0.02, 1.75, 2.55, kExt},
                       Case{"cylinder_block", 0.02, 2.8, 4.7, kExt}),
     [](const ::testing::TestParamInfo<Case> &info) {
       return info.param.shape + "_" + std::to_string(int(info.param.cellFraction * 1000)) +

@@ -100,8 +100,8 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
       const auto &f = m.face[*fi];
       if (zones.faceRegion[*fi] != r) interior = false;
       for (int k = 0; k < 3 && interior; ++k)  // a border edge at v
-        if (f.cFFp(k) == &f && (vcg::tri::Index(m, f.cV(k)) == v ||
-                                vcg::tri::Index(m, f.cV((k + 1) % 3)) == v))
+        if (f.cFFp(k) == &f &&
+            (vcg::tri::Index(m, f.cV(k)) == v || vcg::tri::Index(m, f.cV((k + 1) % 3)) == v))
           interior = false;
     }
     if (interior) {
@@ -165,16 +165,30 @@ std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, Fea
   return opened;
 }
 
+/// A region's plane near one vertex, and how the region departs from it.
+struct RegionPlaneFit {
+  Plane plane{Vec3(0, 0, 0), Vec3(0, 0, 0)};
+  double spreadRad = 0;         ///< largest angle between the normal and a fitted face's
+  CrossScatter3 normalScatter;  ///< area-weighted (normal - plane normal)(centroid - point)^T
+  CrossScatter3 pointScatter;   ///< area-weighted (centroid - point)(centroid - point)^T
+};
+
 /// The plane of region `r` near vertex v: through the area-weighted centroid,
 /// and orthogonal to the area-weighted normal, of the region's faces within
-/// `rings` face rings of v (zero normal when v touches no face of r); and in
-/// `spreadRad` the largest angle between that normal and a fitted face's.
+/// `rings` face rings of v (zero normal when v touches no face of r), refitted
+/// without the faces more than `trimRad` away from that normal (0: no
+/// refit), with the spread of the fitted faces around it (placement reads it
+/// to tell a curved region from a flat one).
 template <class MeshType>
-Plane fitRegionPlane(const MeshType &m, const VertexFaceTable &vf, const FeatureZones &zones,
-                     std::size_t v, int r, int rings, std::vector<int> &stamp, int stampValue,
-                     double &spreadRad) {
+RegionPlaneFit fitRegionPlane(const MeshType &m, const VertexFaceTable &vf,
+                              const FeatureZones &zones, std::size_t v, int r, int rings,
+                              std::vector<int> &stamp, int stampValue, double trimRad) {
+  struct Fitted {
+    Vec3 normal, centroid;
+    double area;
+  };
   std::vector<std::size_t> frontier{v}, next;
-  std::vector<Vec3> faceNormals;
+  std::vector<Fitted> faces;
   Vec3 normalSum(0, 0, 0), centroidSum(0, 0, 0);
   double areaSum = 0;
   for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
@@ -188,19 +202,90 @@ Plane fitRegionPlane(const MeshType &m, const VertexFaceTable &vf, const Feature
         const Vec3 n = (p1 - p0) ^ (p2 - p0);  // twice the area times the unit normal
         const double area = n.Norm();
         normalSum += n;
-        if (area > 0) faceNormals.push_back(n / area);
+        if (area > 0) faces.push_back(Fitted{n / area, (p0 + p1 + p2) / 3.0, area});
         centroidSum += (p0 + p1 + p2) * (area / 3.0);
         areaSum += area;
         for (int k = 0; k < 3; ++k) next.push_back(vcg::tri::Index(m, f.cV(k)));
       }
     frontier.swap(next);
   }
-  spreadRad = 0;
+  RegionPlaneFit fit;
+  fit.plane.point = positionOf(&m.vert[v]);
   const double len = normalSum.Norm();
-  if (!(areaSum > 0) || !(len > 0)) return Plane{positionOf(&m.vert[v]), Vec3(0, 0, 0)};
-  const Vec3 normal = normalSum / len;
-  for (const Vec3 &n : faceNormals) spreadRad = std::max(spreadRad, angleBetween(normal, n));
-  return Plane{centroidSum / areaSum, normal};
+  if (!(areaSum > 0) || !(len > 0)) return fit;
+  fit.plane = Plane{centroidSum / areaSum, normalSum / len};
+  if (trimRad > 0) {
+    // Refit without the faces that turn away from the dominant normal: the
+    // border of a region often holds a few faces of the chamfer.
+    const double trim = trimRad;
+    Vec3 n2(0, 0, 0), c2(0, 0, 0);
+    double a2 = 0;
+    std::vector<Fitted> kept;
+    for (const Fitted &f : faces)
+      if (angleBetween(fit.plane.normal, f.normal) <= trim) {
+        n2 += f.normal * f.area;
+        c2 += f.centroid * f.area;
+        a2 += f.area;
+        kept.push_back(f);
+      }
+    if (a2 > 0 && n2.Norm() > 0) {
+      fit.plane = Plane{c2 / a2, n2 / n2.Norm()};
+      faces.swap(kept);
+      areaSum = a2;
+    }
+  }
+  for (const Fitted &f : faces) {
+    fit.spreadRad = std::max(fit.spreadRad, angleBetween(fit.plane.normal, f.normal));
+    fit.normalScatter.add(f.normal - fit.plane.normal, f.centroid - fit.plane.point, f.area);
+    fit.pointScatter.add(f.centroid - fit.plane.point, f.centroid - fit.plane.point, f.area);
+  }
+  fit.normalScatter.scale(1.0 / areaSum);
+  fit.pointScatter.scale(1.0 / areaSum);
+  return fit;
+}
+
+/// For every vertex with a plane, finds up to three other regions whose
+/// labelled vertices lie within `rings` hops (closest first) and records one
+/// vertex of each in zones.support.nearby; placement checks the planes' line
+/// against them. Also fills zones.support.region.
+template <class MeshType>
+void collectNearbyRegions(const MeshType &m, const VertexFaceTable &vf, FeatureZones &zones,
+                          int rings) {
+  const std::size_t nv = m.vert.size();
+  auto &support = zones.support;
+  support.region.assign(nv, kZone);
+  support.nearby.assign(
+      nv, {SupportPlanes::kNoVertex, SupportPlanes::kNoVertex, SupportPlanes::kNoVertex});
+  const auto hasPlane = [&](std::size_t v) {
+    return zones.vertexLabel[v] >= 0 && support.plane[v].normal.SquaredNorm() > 0;
+  };
+  for (std::size_t v = 0; v < nv; ++v)
+    if (hasPlane(v)) support.region[v] = zones.vertexLabel[v];
+  std::vector<std::size_t> visited, frontier, next;
+  std::vector<int> stamp(nv, -1);
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (!hasPlane(v)) continue;
+    auto &found = support.nearby[v];
+    int count = 0;
+    frontier.assign(1, v);
+    stamp[v] = int(v);
+    for (int ring = 0; ring < rings && count < 3; ++ring) {
+      next.clear();
+      for (std::size_t w : frontier)
+        detail::forEachNeighbour(m, vf, w, [&](std::size_t u) {
+          if (stamp[u] == int(v)) return;
+          stamp[u] = int(v);
+          next.push_back(u);
+        });
+      for (std::size_t u : next) {
+        if (count == 3 || !hasPlane(u) || support.region[u] == support.region[v]) continue;
+        bool known = false;
+        for (int i = 0; i < count; ++i) known |= support.region[found[i]] == support.region[u];
+        if (!known) found[count++] = std::uint32_t(u);
+      }
+      frontier.swap(next);
+    }
+  }
 }
 
 /// Labels every vertex: region vertices with their region (kCrease where
@@ -215,6 +300,8 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
   zones.inRegion.assign(nv, 0);
   zones.support.plane.assign(nv, Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)});
   zones.support.spreadRad.assign(nv, 0.0);
+  zones.support.normalScatter.assign(nv, CrossScatter3{});
+  zones.support.pointScatter.assign(nv, CrossScatter3{});
   std::vector<int> stamp(m.face.size(), -1);
   int stampValue = 0;
   std::vector<char> touchesZone(nv, 0);
@@ -235,9 +322,14 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
     }
     zones.inRegion[v] = 1;
     zones.vertexLabel[v] = label;
-    if (label >= 0 && touchesZone[v])
-      zones.support.plane[v] = fitRegionPlane(m, vf, zones, v, label, opt.supportRings, stamp,
-                                              stampValue++, zones.support.spreadRad[v]);
+    if (label >= 0 && touchesZone[v]) {
+      const RegionPlaneFit fit = fitRegionPlane(m, vf, zones, v, label, opt.supportRings, stamp,
+                                                stampValue++, opt.fitTrimAngleRad);
+      zones.support.plane[v] = fit.plane;
+      zones.support.spreadRad[v] = fit.spreadRad;
+      zones.support.normalScatter[v] = fit.normalScatter;
+      zones.support.pointScatter[v] = fit.pointScatter;
+    }
   }
 
   // Breadth-first waves from every region border vertex into the zone; each
@@ -283,10 +375,13 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
         zones.vertexLabel[v] = cand[v][i].region;
         zones.support.plane[v] = pl;
         zones.support.spreadRad[v] = zones.support.spreadRad[cand[v][i].anchor];
+        zones.support.normalScatter[v] = zones.support.normalScatter[cand[v][i].anchor];
+        zones.support.pointScatter[v] = zones.support.pointScatter[cand[v][i].anchor];
       }
     }
     stats.labelledZoneVertices += zones.vertexLabel[v] >= 0;
   }
+  collectNearbyRegions(m, vf, zones, opt.supportRings);
 }
 
 /// Marks the chamfer edges and faces of the extended method in the paper's
@@ -295,8 +390,7 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
 /// mesh border) whose endpoints carry different region labels is a chamfer
 /// edge; faces with three such edges are corners.
 template <class MeshType>
-FilterStats markZoneChamfers(MeshType &m, MeshLabels<MeshType> &labels,
-                             const FeatureZones &zones) {
+FilterStats markZoneChamfers(MeshType &m, MeshLabels<MeshType> &labels, const FeatureZones &zones) {
   FilterStats s;
   for (auto &f : m.face) {
     if (f.IsD()) continue;

@@ -6,12 +6,13 @@
 // triangle ABC adds the plane R through C with unit normal L.
 #pragma once
 
+#include <vcg/space/point3.h>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
-
-#include <vcg/space/point3.h>
 
 namespace edge_sharpener {
 
@@ -38,8 +39,8 @@ inline double angleBetween(const Vec3 &u, const Vec3 &v) {
 /// exactly for parallel planes. (The paper's printed closed form is damaged;
 /// this solves the same problem directly.)
 inline std::optional<Vec3> closestPointOnPlanePairLine(const Plane &p, const Plane &q,
-                                                        const Vec3 &target,
-                                                        double parallelAngleRad) {
+                                                       const Vec3 &target,
+                                                       double parallelAngleRad) {
   const double sinTol = std::sin(parallelAngleRad);
   const double det = (p.normal ^ q.normal).SquaredNorm();  // = 1 - c^2
   if (!(det > sinTol * sinTol)) return std::nullopt;       // also rejects NaN
@@ -78,9 +79,10 @@ inline EdgeConvexity classifyChamferEdge(const Plane &p, const Plane &q, double 
   const double sA = -(q.normal * ab);  // A relative to Q
   const auto sign = [tol](double s) { return s > tol ? 1 : (s < -tol ? -1 : 0); };
   const int b = sign(sB), a = sign(sA);
-  if (a == 0 || b == 0) return a + b < 0 ? EdgeConvexity::Convex
-                               : a + b > 0 ? EdgeConvexity::Concave
-                                           : EdgeConvexity::Flat;
+  if (a == 0 || b == 0)
+    return a + b < 0   ? EdgeConvexity::Convex
+           : a + b > 0 ? EdgeConvexity::Concave
+                       : EdgeConvexity::Flat;
   if (a != b) return EdgeConvexity::Mixed;
   return a < 0 ? EdgeConvexity::Convex : EdgeConvexity::Concave;
 }
@@ -110,6 +112,62 @@ inline double chamferApexHeightRatio(const Plane &p, const Plane &q, const Vec3 
   return height / bound;
 }
 
+/// Whether the normal of a third plane L lies on the way from P's normal to
+/// Q's: within `slackRad` of the shortest arc between them. Such a plane is an
+/// intermediate facet or a strip of a blend between the two flanks.
+inline bool normalBetween(const Vec3 &np, const Vec3 &nq, const Vec3 &nl, double slackRad) {
+  return angleBetween(np, nl) + angleBetween(nl, nq) <= angleBetween(np, nq) + slackRad;
+}
+
+/// How far the sharp point x, reached from `rest` on the chamfer, passes
+/// through plane L: measured along L's normal, positive when x lies outside
+/// L at a convex feature (x moved outward, along `flankNormalSum`, the sum
+/// of the flanks' normals) or inside L at a concave one. A point beyond an
+/// intermediate plane cuts through the surface that plane samples.
+inline double passageBeyondPlane(const Vec3 &flankNormalSum, const Plane &l, const Vec3 &rest,
+                                 const Vec3 &x) {
+  const double outward = (x - rest) * flankNormalSum;
+  const double side = l.normal * (x - l.point);
+  return outward >= 0 ? side : -side;
+}
+
+/// A 3x3 matrix in single precision accumulating weighted outer products
+/// u v^T (a cross-covariance), row-major.
+struct CrossScatter3 {
+  std::array<float, 9> a{};
+  /// Adds weight * u v^T.
+  void add(const Vec3 &u, const Vec3 &v, double weight) {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) a[3 * i + j] += float(weight * u[i] * v[j]);
+  }
+  void scale(double s) {
+    for (float &x : a) x = float(x * s);
+  }
+  /// w^T M w.
+  double along(const Vec3 &w) const {
+    double sum = 0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) sum += w[i] * a[3 * i + j] * w[j];
+    return sum;
+  }
+};
+
+/// How far a surface bends away from its fitted plane over `distance` along
+/// unit direction w. The curvature along w is the regression slope of the
+/// fitted faces' normal deviations on their positions along w: the
+/// normal-position cross-scatter over the position scatter (normals of a
+/// cylinder turn in proportion to position across its axis; the staircase
+/// noise of marching cubes does not correlate with position). A curve of
+/// curvature k leaves its tangent by k d^2 / 2.
+inline double extrapolationBend(const CrossScatter3 &normalPosition,
+                                const CrossScatter3 &positionScatter, const Vec3 &w,
+                                double distance) {
+  const double turn = std::abs(normalPosition.along(w)), extent = positionScatter.along(w);
+  if (!(turn > 0)) return 0.0;
+  if (!(extent > 0)) return std::numeric_limits<double>::infinity();
+  return 0.5 * (turn / extent) * distance * distance;
+}
+
 /// Smallest interior angle of triangle abc in radians (0 for a degenerate one).
 inline double minTriangleAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
   const double ta = angleBetween(b - a, c - a);
@@ -121,8 +179,8 @@ inline double minTriangleAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
 
 /// Largest interior angle of triangle abc in radians.
 inline double maxTriangleAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
-  return std::max({angleBetween(b - a, c - a), angleBetween(c - b, a - b),
-                   angleBetween(a - c, b - c)});
+  return std::max(
+      {angleBetween(b - a, c - a), angleBetween(c - b, a - b), angleBetween(a - c, b - c)});
 }
 
 /// Interior angle at vertex `a` of triangle abc (the paper's weight).

@@ -1,11 +1,10 @@
 // Parameters of Edge-Sharpener (Attene, Falcidieno, Rossignac, Spagnuolo 2003).
 #pragma once
 
-#include <cmath>
-
-#include <cstring>  // wrap/callback.h uses strcpy without including it
-
 #include <wrap/callback.h>
+
+#include <cmath>
+#include <cstring>  // wrap/callback.h uses strcpy without including it
 
 namespace edge_sharpener {
 
@@ -74,6 +73,28 @@ struct SharpenOptions {
   /// between the two planes: a finely sampled blend, not a sharp edge.
   /// 0 disables the test.
   double maxSupportSpreadRatio = 0.35;
+  /// An inserted vertex stays at rest when it would pass through the plane of
+  /// a third region nearby whose normal lies between the two flanks' (within
+  /// `intermediateSlackRad`) by more than this fraction of its displacement:
+  /// the surface turns through facets or a blend, not at one sharp edge.
+  /// Negative disables the test.
+  double intermediatePlaneTolerance = 0.3;
+  /// An inserted vertex stays at rest when a flank's region, bending across
+  /// the feature as measured where its plane was fitted, would leave that
+  /// plane by more than this fraction of the vertex's displacement before
+  /// reaching the sharp edge (geometry.h: extrapolationBend). Negative
+  /// disables the test.
+  double maxBendFraction = 0.6;
+  /// ...tested only where the fitted faces spread by at least this angle
+  /// (radians): below it, marching cubes' staircase dominates the estimate.
+  double minBendSpreadRad = 5.0 * M_PI / 180.0;
+  /// How far (radians) a third region's normal may lie off the arc between
+  /// the flanks' normals and still count as between them.
+  double intermediateSlackRad = 10.0 * M_PI / 180.0;
+  /// A region's plane is refitted without its faces turned more than this
+  /// (radians) from the first fit: a region's border often holds a few
+  /// faces of the chamfer. 0: no refit.
+  double fitTrimAngleRad = 15.0 * M_PI / 180.0;
 
   /// Optional progress callback (percent, stage name); may be null.
   vcg::CallBackPos *progress = nullptr;

@@ -3,6 +3,8 @@
 // or keeps it at rest for one of the paper's degenerate cases.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 #include "options.h"
@@ -50,6 +52,16 @@ struct SupportPlanes {
   /// Largest angle between the plane's normal and the normals of the region
   /// faces it was fitted to; empty when not measured (the paper's method).
   std::vector<double> spreadRad;
+  /// Extended method: scatter of the fitted faces' normals and centroids
+  /// about the plane (geometry.h: extrapolationBend); empty otherwise.
+  std::vector<CrossScatter3> normalScatter, pointScatter;
+  /// Extended method: the region each vertex's plane belongs to (-1: none)...
+  std::vector<int> region;
+  /// ...and, for vertices next to the feature zone, vertices holding the
+  /// planes of up to three other regions found nearby (closest first;
+  /// kNoVertex pads). Empty for the paper's method.
+  static constexpr std::uint32_t kNoVertex = ~std::uint32_t(0);
+  std::vector<std::array<std::uint32_t, 3>> nearby;
 };
 
 /// The paper's support planes: through each original vertex, orthogonal to
@@ -89,8 +101,8 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
     for (int i = 0; i < pairs; ++i) {
       const int j = (i + 1) % src.originalCount;
       const double theta = angleBetween(planes[i].normal, planes[j].normal);
-      const double spread = std::max(support.spreadRad[src.original[i]],
-                                     support.spreadRad[src.original[j]]);
+      const double spread =
+          std::max(support.spreadRad[src.original[i]], support.spreadRad[src.original[j]]);
       if (spread > opt.maxSupportSpreadRatio * theta) return Placement::CurvedSupport;
     }
   }
@@ -111,6 +123,53 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
     auto x = intersectThreePlanes(planes[0], planes[1], planes[2], opt.parallelAngleRad);
     if (!x) return Placement::CoplanarNormals;
     target = *x;
+  }
+  if (!support.normalScatter.empty() && opt.maxBendFraction >= 0) {
+    // A region curving across the feature (a blend, a coarse cylinder's
+    // facets) leaves its tangent plane before the planes meet.
+    const double allowed = opt.maxBendFraction * (target - src.rest).Norm();
+    for (int i = 0; i < src.originalCount; ++i) {
+      const std::size_t v = src.original[i];
+      Vec3 w = target - planes[i].point;
+      w -= planes[i].normal * (planes[i].normal * w);
+      if (src.originalCount == 2) {  // across the edge only
+        Vec3 edge = planes[0].normal ^ planes[1].normal;
+        const double len = edge.Norm();
+        if (len > 0) w -= edge * ((edge * w) / (len * len));
+      }
+      const double d = w.Norm();
+      if (!(d > 0)) continue;
+      // Below this spread the regression mostly sees marching-cubes noise.
+      if (support.spreadRad[v] < opt.minBendSpreadRad) continue;
+      if (extrapolationBend(support.normalScatter[v], support.pointScatter[v], w / d, d) > allowed)
+        return Placement::CurvedSupport;
+    }
+  }
+  if (!support.nearby.empty() && opt.intermediatePlaneTolerance >= 0) {
+    // Another region whose plane turns between two flanks stands between
+    // them (a facet of a coarse curve, a strip of a blend): the planes' line
+    // or corner would cut through it.
+    const double allowed = opt.intermediatePlaneTolerance * (target - src.rest).Norm();
+    const int n = src.originalCount;
+    Vec3 normalSum(0, 0, 0);
+    for (int i = 0; i < n; ++i) normalSum += planes[i].normal;
+    const auto isFlank = [&](int region) {
+      for (int i = 0; i < n; ++i)
+        if (support.region[src.original[i]] == region) return true;
+      return false;
+    };
+    for (int i = 0; i < n; ++i)
+      for (std::uint32_t u : support.nearby[src.original[i]]) {
+        if (u == SupportPlanes::kNoVertex) break;
+        if (isFlank(support.region[u])) continue;
+        const Plane &l = support.plane[u];
+        bool between = false;
+        for (int a = 0; a < (n == 2 ? 1 : 3); ++a)
+          between |= normalBetween(planes[a].normal, planes[(a + 1) % n].normal, l.normal,
+                                   opt.intermediateSlackRad);
+        if (between && passageBeyondPlane(normalSum, l, src.rest, target) > allowed)
+          return Placement::CurvedSupport;
+      }
   }
   if (opt.method == Method::Extended && opt.apexHeightFactor > 0) {
     const int pairs = src.originalCount == 2 ? 1 : 3;
