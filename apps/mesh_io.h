@@ -1,6 +1,10 @@
-// Mesh reading and writing for the command-line programs, on vcglib's
-// importers/exporters (PLY, OFF, OBJ, STL), with one-line error messages.
+// Mesh reading and writing for the command-line programs (PLY, OFF, OBJ, STL),
+// with one-line error messages: our own strict readers, vcglib's exporters.
 #pragma once
+
+// clang-format off
+#include <cstring>  // first: vcglib's wrap/callback.h uses strcpy without including it
+// clang-format on
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/complex.h>
@@ -134,8 +138,11 @@ inline StlSoup readStl(const std::string &path) {
 
 /// An indexed polygon mesh read by the text readers below.
 struct PolygonMesh {
-  std::vector<float> coords;             // 3 per vertex
-  std::vector<std::vector<long>> faces;  // 0-based, validated
+  std::vector<float> coords;  // 3 per vertex
+  std::vector<long> index;    // the faces' vertex indices, 0-based, validated
+  std::vector<std::size_t>
+      offset;  // face f is index[offset[f], offset[f + 1]); back() = index.size()
+  std::size_t faceCount() const { return offset.empty() ? 0 : offset.size() - 1; }
 };
 
 /// Splits text into lines without comments ('#' to end of line) and blank lines.
@@ -210,18 +217,18 @@ inline PolygonMesh parseOff(const std::string &text) {
     long k;
     if (!(in >> tk) || !parseLong(tk, k) || k < 0 || k > 1000000)
       fail("bad face line " + std::to_string(i));
-    std::vector<long> face;
+    mesh.offset.push_back(mesh.index.size());
     for (long j = 0; j < k; ++j) {
       long index;
       if (!(in >> tk) || !parseLong(tk, index)) fail("face " + std::to_string(i) + " is short");
       if (index < 0 || index >= nv)
         fail("face " + std::to_string(i) + " has vertex index " + std::to_string(index) +
              " out of range [0, " + std::to_string(nv) + ")");
-      face.push_back(index);
+      mesh.index.push_back(index);
     }
     if (k < 3) fail("face " + std::to_string(i) + " has fewer than 3 vertices");
-    mesh.faces.push_back(std::move(face));
   }
+  mesh.offset.push_back(mesh.index.size());
   return mesh;
 }
 
@@ -248,7 +255,7 @@ inline PolygonMesh parseObj(const std::string &text) {
         mesh.coords.push_back(value);
       }
     } else if (kw == "f") {
-      std::vector<long> face;
+      const std::size_t first = mesh.index.size();
       const long nv = long(mesh.coords.size() / 3);
       std::string tk;
       while (in >> tk) {
@@ -259,10 +266,10 @@ inline PolygonMesh parseObj(const std::string &text) {
         if (index < 0 || index >= nv)
           fail("face index " + tk.substr(0, 20) + " out of range (" + std::to_string(nv) +
                " vertices so far)");
-        face.push_back(index);
+        mesh.index.push_back(index);
       }
-      if (face.size() < 3) fail("face with fewer than 3 vertices");
-      mesh.faces.push_back(std::move(face));
+      if (mesh.index.size() - first < 3) fail("face with fewer than 3 vertices");
+      mesh.offset.push_back(first);
     } else {
       static const char *const kIgnored[] = {
           "vt",     "vn",     "vp",  "l",    "p",     "g",    "o",    "s",   "mg",   "usemtl",
@@ -272,6 +279,7 @@ inline PolygonMesh parseObj(const std::string &text) {
              std::to_string(lineNo));
     }
   }
+  mesh.offset.push_back(mesh.index.size());
   return mesh;
 }
 
@@ -280,7 +288,7 @@ inline PolygonMesh parseObj(const std::string &text) {
 template <class MeshType>
 void buildFromPolygons(const PolygonMesh &p, MeshType &m) {
   std::size_t triangles = 0;
-  for (const auto &f : p.faces) triangles += f.size() - 2;
+  for (std::size_t f = 0; f < p.faceCount(); ++f) triangles += p.offset[f + 1] - p.offset[f] - 2;
   const std::size_t nv = p.coords.size() / 3;
   if (nv > 0) {
     auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, nv);
@@ -289,27 +297,69 @@ void buildFromPolygons(const PolygonMesh &p, MeshType &m) {
   }
   if (triangles == 0) return;
   auto fi = vcg::tri::Allocator<MeshType>::AddFaces(m, triangles);
-  for (const auto &f : p.faces)
-    for (std::size_t j = 1; j + 1 < f.size(); ++j, ++fi) {
-      fi->V(0) = &m.vert[f[0]];
-      fi->V(1) = &m.vert[f[j]];
-      fi->V(2) = &m.vert[f[j + 1]];
+  for (std::size_t f = 0; f < p.faceCount(); ++f) {
+    const long *v = p.index.data() + p.offset[f];
+    const std::size_t n = p.offset[f + 1] - p.offset[f];
+    for (std::size_t j = 1; j + 1 < n; ++j, ++fi) {
+      fi->V(0) = &m.vert[v[0]];
+      fi->V(1) = &m.vert[v[j]];
+      fi->V(2) = &m.vert[v[j + 1]];
     }
+  }
 }
 
-/// Checks the PLY header line by line before vcglib parses it: vcglib's
-/// parser dereferences missing tokens (an "element" line without a count
-/// crashes it). \throws std::runtime_error naming the bad line.
-inline void checkPlyHeader(const std::string &path) {
-  std::ifstream file(path, std::ios::binary);
-  std::string line;
+/// One property of a PLY element: a scalar, or a list (count type + item type).
+struct PlyProperty {
+  std::string name;
+  int type = 0;  ///< byte size of the value (list items); 0: unknown
+  bool isFloat = false, isSigned = false;
+  bool list = false;
+  int countType = 0;  ///< byte size of the list count
+  bool countSigned = false;
+};
+
+struct PlyElement {
+  std::string name;
+  std::uint64_t count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+struct PlyHeader {
+  enum Format { Ascii, BinaryLittle, BinaryBig } format = Ascii;
+  std::vector<PlyElement> elements;
+  std::size_t bodyStart = 0;  ///< byte offset of the first byte after "end_header\n"
+};
+
+/// Size/kind of a PLY scalar type name (both spellings: "uchar" and "uint8").
+inline bool plyScalarType(const std::string &t, int &size, bool &isFloat, bool &isSigned) {
+  struct Kind {
+    const char *a, *b;
+    int size;
+    bool isFloat, isSigned;
+  };
+  static const Kind kKinds[] = {
+      {"char", "int8", 1, false, true},    {"uchar", "uint8", 1, false, false},
+      {"short", "int16", 2, false, true},  {"ushort", "uint16", 2, false, false},
+      {"int", "int32", 4, false, true},    {"uint", "uint32", 4, false, false},
+      {"float", "float32", 4, true, true}, {"double", "float64", 8, true, true}};
+  for (const Kind &k : kKinds)
+    if (t == k.a || t == k.b) {
+      size = k.size, isFloat = k.isFloat, isSigned = k.isSigned;
+      return true;
+    }
+  return false;
+}
+
+/// Parses a PLY header (strictly: every line must be well-formed, every type
+/// known). \throws std::runtime_error naming the bad line.
+inline PlyHeader parsePlyHeader(const std::string &bytes) {
   const auto tokens = [](const std::string &l) {
     std::vector<std::string> out;
     std::size_t i = 0;
     while (i < l.size()) {
-      while (i < l.size() && std::strchr(" \t\r\n", l[i])) ++i;
+      while (i < l.size() && std::strchr(" \t\r", l[i])) ++i;
       const std::size_t start = i;
-      while (i < l.size() && !std::strchr(" \t\r\n", l[i])) ++i;
+      while (i < l.size() && !std::strchr(" \t\r", l[i])) ++i;
       if (i > start) out.push_back(l.substr(start, i - start));
     }
     return out;
@@ -318,8 +368,15 @@ inline void checkPlyHeader(const std::string &path) {
     return !t.empty() && t.size() < 12 &&
            std::all_of(t.begin(), t.end(), [](unsigned char c) { return std::isdigit(c); });
   };
+  PlyHeader h;
+  bool haveFormat = false;
+  std::size_t at = 0;
   constexpr int kMaxHeaderLines = 10000;
-  for (int n = 0; n < kMaxHeaderLines && std::getline(file, line); ++n) {
+  for (int n = 0; n < kMaxHeaderLines && at < bytes.size(); ++n) {
+    std::size_t eol = bytes.find('\n', at);
+    if (eol == std::string::npos) break;
+    const std::string line = bytes.substr(at, eol - at);
+    at = eol + 1;
     const std::vector<std::string> t = tokens(line);
     const std::string where = "PLY header line " + std::to_string(n + 1);
     if (n == 0) {
@@ -328,16 +385,240 @@ inline void checkPlyHeader(const std::string &path) {
     }
     if (t.empty()) throw std::runtime_error(where + " is empty");
     const std::string &key = t[0];
-    if (key == "end_header") return;
+    if (key == "end_header") {
+      if (t.size() != 1) throw std::runtime_error(where + " is malformed");
+      if (!haveFormat) throw std::runtime_error("PLY header has no format line");
+      h.bodyStart = at;
+      return h;
+    }
     if (key == "comment" || key == "obj_info") continue;
-    if (key == "format" && t.size() == 3) continue;
-    if (key == "element" && t.size() == 3 && isCount(t[2])) continue;
-    if (key == "property" && ((t.size() == 3 && t[1] != "list") ||
-                              (t.size() == 5 && t[1] == "list")))
+    if (key == "format" && t.size() == 3 && !haveFormat) {
+      if (t[1] == "ascii")
+        h.format = PlyHeader::Ascii;
+      else if (t[1] == "binary_little_endian")
+        h.format = PlyHeader::BinaryLittle;
+      else if (t[1] == "binary_big_endian")
+        h.format = PlyHeader::BinaryBig;
+      else
+        throw std::runtime_error(where + ": unknown format '" + t[1].substr(0, 20) + "'");
+      haveFormat = true;
       continue;
+    }
+    if (key == "element" && t.size() == 3 && isCount(t[2])) {
+      h.elements.push_back({t[1], std::stoull(t[2]), {}});
+      continue;
+    }
+    if (key == "property" && !h.elements.empty()) {
+      PlyProperty p;
+      bool ok = false;
+      if (t.size() == 3 && t[1] != "list") {
+        p.name = t[2];
+        ok = plyScalarType(t[1], p.type, p.isFloat, p.isSigned);
+      } else if (t.size() == 5 && t[1] == "list") {
+        p.name = t[4];
+        p.list = true;
+        bool countFloat = false;
+        ok = plyScalarType(t[2], p.countType, countFloat, p.countSigned) && !countFloat &&
+             plyScalarType(t[3], p.type, p.isFloat, p.isSigned);
+      }
+      if (!ok) throw std::runtime_error(where + ": bad property");
+      h.elements.back().properties.push_back(p);
+      continue;
+    }
     throw std::runtime_error(where + " is malformed");
   }
   throw std::runtime_error("PLY header has no end_header");
+}
+
+/// Reads the values of a PLY body one at a time, ASCII or binary, never past
+/// its end. \throws std::runtime_error on a short or malformed body.
+class PlyBodyReader {
+ public:
+  PlyBodyReader(const std::string &bytes, const PlyHeader &h)
+      : p_(bytes.data() + h.bodyStart), end_(bytes.data() + bytes.size()), format_(h.format) {}
+
+  std::size_t remaining() const { return std::size_t(end_ - p_); }
+  bool ascii() const { return format_ == PlyHeader::Ascii; }
+
+  /// The next value of the given type, as a double (exact for every integer type).
+  double read(int size, bool isFloat, bool isSigned) {
+    if (ascii()) return readToken();
+    if (remaining() < std::size_t(size))
+      throw std::runtime_error("malformed PLY: the file is truncated");
+    unsigned char b[8];
+    std::memcpy(b, p_, size);
+    p_ += size;
+    if (format_ == PlyHeader::BinaryBig) std::reverse(b, b + size);
+    if (isFloat) {
+      if (size == 4) {
+        float f;
+        std::memcpy(&f, b, 4);
+        return f;
+      }
+      double d;
+      std::memcpy(&d, b, 8);
+      return d;
+    }
+    std::uint64_t u = 0;
+    for (int i = size - 1; i >= 0; --i) u = (u << 8) | b[i];  // little endian after the swap
+    if (isSigned && size < 8 && (u >> (8 * size - 1)) & 1)
+      return double(std::int64_t(u) - (std::int64_t(1) << (8 * size)));
+    return double(u);
+  }
+
+  /// An integer value (list count or index): non-integral ASCII values are an error.
+  long readInteger(int size, bool isSigned) {
+    const double v = read(size, false, isSigned);
+    if (!(v == std::floor(v)) || std::fabs(v) > 4e18)
+      throw std::runtime_error("malformed PLY: expected an integer");
+    return long(v);
+  }
+
+  void skip(const PlyProperty &p) {
+    if (!p.list) {
+      read(p.type, p.isFloat, p.isSigned);
+      return;
+    }
+    const long n = readInteger(p.countType, p.countSigned);
+    if (n < 0) throw std::runtime_error("malformed PLY: negative list length");
+    if (!ascii()) {
+      if (std::uint64_t(n) * std::uint64_t(p.type) > remaining())
+        throw std::runtime_error("malformed PLY: the file is truncated");
+      p_ += std::size_t(n) * std::size_t(p.type);
+      return;
+    }
+    for (long i = 0; i < n; ++i) read(p.type, p.isFloat, p.isSigned);
+  }
+
+ private:
+  double readToken() {
+    while (p_ < end_ && std::isspace(static_cast<unsigned char>(*p_))) ++p_;
+    if (p_ == end_) throw std::runtime_error("malformed PLY: the file is truncated");
+    const char *start = p_;
+    while (p_ < end_ && !std::isspace(static_cast<unsigned char>(*p_))) ++p_;
+    const std::string token(start, std::min<std::size_t>(p_ - start, 64));
+    char *stop = nullptr;
+    const double v = std::strtod(token.c_str(), &stop);
+    if (token.empty() || stop != token.c_str() + token.size() || std::size_t(p_ - start) > 64)
+      throw std::runtime_error("malformed PLY: bad number '" + token.substr(0, 20) + "'");
+    return v;
+  }
+
+  const char *p_, *end_;
+  PlyHeader::Format format_;
+};
+
+/// Reads a PLY file (ASCII, binary little or big endian) with our own strict
+/// parser: vertex x, y, z; faces from "face" (list vertex_indices or
+/// vertex_index) and "tristrips" (list vertex_indices, -1 restarts a strip);
+/// every other element and property is skipped. Every face index is checked
+/// against the vertex count, polygons need 3 or more vertices.
+/// (vcglib's PLY importer reads freed memory on a polygon with an index out
+/// of range, and crashes on malformed headers.)
+inline PolygonMesh readPly(const std::string &bytes) {
+  auto fail = [](const std::string &why) { throw std::runtime_error("malformed PLY: " + why); };
+  const PlyHeader h = parsePlyHeader(bytes);
+  PlyBodyReader in(bytes, h);
+  // Smallest byte size of one item of an element: a cap on how many fit in the file.
+  const auto minimalSize = [&](const PlyElement &e) {
+    std::uint64_t size = 0;
+    for (const PlyProperty &p : e.properties)
+      size += in.ascii() ? 2 : (p.list ? p.countType : p.type);
+    return size;
+  };
+  PolygonMesh mesh;
+  bool haveVertices = false;
+  long nv = -1;
+  std::vector<std::uint64_t> source;  // per face: its item in the face/tristrips element
+  for (const PlyElement &e : h.elements) {
+    if (e.properties.empty()) continue;  // nothing to read, whatever its count
+    // ASCII: a value takes at least 2 bytes (digit + separator), except the last one.
+    const std::uint64_t room = in.ascii() ? in.remaining() + 1 : in.remaining();
+    const std::uint64_t minSize = minimalSize(e);
+    if (e.count > room / minSize)
+      fail("element '" + e.name.substr(0, 20) + "' declares " + std::to_string(e.count) +
+           " items, the file has room for " + std::to_string(room / minSize));
+    if (e.name == "vertex") {
+      if (haveVertices) fail("two vertex elements");
+      haveVertices = true;
+      int axis[3] = {-1, -1, -1};
+      for (std::size_t i = 0; i < e.properties.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+          if (!e.properties[i].list && e.properties[i].name == std::string(1, char('x' + c)))
+            axis[c] = int(i);
+      if (e.count > 0 && (axis[0] < 0 || axis[1] < 0 || axis[2] < 0))
+        fail("vertex element without x, y, z");
+      if (e.count >= 0xffffffffu) fail("too many vertices");
+      nv = long(e.count);
+      mesh.coords.resize(3 * e.count);
+      for (std::uint64_t v = 0; v < e.count; ++v)
+        for (std::size_t i = 0; i < e.properties.size(); ++i) {
+          const PlyProperty &p = e.properties[i];
+          const int c = int(i) == axis[0] ? 0 : int(i) == axis[1] ? 1 : int(i) == axis[2] ? 2 : -1;
+          if (c < 0)
+            in.skip(p);
+          else
+            mesh.coords[3 * v + c] = float(in.read(p.type, p.isFloat, p.isSigned));
+        }
+      continue;
+    }
+    const bool isFace = e.name == "face", isStrip = e.name == "tristrips";
+    int list = -1;
+    for (std::size_t i = 0; i < e.properties.size(); ++i)
+      if (e.properties[i].list && (e.properties[i].name == "vertex_indices" ||
+                                   (isFace && e.properties[i].name == "vertex_index")))
+        list = int(i);
+    if ((isFace || isStrip) && e.count > 0 && list < 0)
+      fail(e.name + " element without a vertex_indices list");
+    if ((isFace || isStrip) && e.properties[list < 0 ? 0 : list].isFloat && e.count > 0)
+      fail("vertex indices must be integers");
+    std::vector<long> strip;
+    for (std::uint64_t f = 0; f < e.count; ++f)
+      for (std::size_t i = 0; i < e.properties.size(); ++i) {
+        const PlyProperty &p = e.properties[i];
+        if (!(isFace || isStrip) || int(i) != list) {
+          in.skip(p);
+          continue;
+        }
+        const long n = in.readInteger(p.countType, p.countSigned);
+        if (n < 0) fail(e.name + " " + std::to_string(f) + " has a negative list length");
+        if (std::uint64_t(n) >
+            (in.ascii() ? (in.remaining() + 1) / 2 : in.remaining() / std::uint64_t(p.type)))
+          fail("the file is truncated (" + e.name + " " + std::to_string(f) + " declares " +
+               std::to_string(n) + " vertices)");
+        if (isFace) {
+          if (n < 3) fail("face " + std::to_string(f) + " has fewer than 3 vertices");
+          source.push_back(f);
+          mesh.offset.push_back(mesh.index.size());
+          for (long j = 0; j < n; ++j) mesh.index.push_back(in.readInteger(p.type, p.isSigned));
+          continue;
+        }
+        strip.clear();
+        for (long j = 0; j < n; ++j) strip.push_back(in.readInteger(p.type, p.isSigned));
+        // Triangles (s[k], s[k+1], s[k+2]), every other one flipped; -1 restarts.
+        for (std::size_t begin = 0; begin < strip.size();) {
+          std::size_t stop = begin;
+          while (stop < strip.size() && strip[stop] != -1) ++stop;
+          for (std::size_t k = begin; k + 2 < stop; ++k) {
+            long a = strip[k], b = strip[k + 1];
+            const long c = strip[k + 2];
+            if ((k - begin) % 2) std::swap(a, b);
+            if (a == b || b == c || a == c) continue;  // strip-joining degenerate triangle
+            source.push_back(f);
+            mesh.offset.push_back(mesh.index.size());
+            for (long x : {a, b, c}) mesh.index.push_back(x);
+          }
+          begin = stop + 1;
+        }
+      }
+  }
+  mesh.offset.push_back(mesh.index.size());
+  for (std::size_t f = 0; f + 1 < mesh.offset.size(); ++f)
+    for (std::size_t j = mesh.offset[f]; j < mesh.offset[f + 1]; ++j)
+      if (mesh.index[j] < 0 || mesh.index[j] >= nv)
+        fail("face " + std::to_string(source[f]) + " has vertex index " +
+             std::to_string(mesh.index[j]) + " out of range [0, " + std::to_string(nv) + ")");
+  return mesh;
 }
 
 template <class MeshType>
@@ -357,7 +638,7 @@ void buildFromSoup(const StlSoup &soup, MeshType &m) {
 
 /// Loads `path` into `m` (cleared first). STL stores a triangle soup, so its
 /// coincident vertices are merged; other formats are taken as they are.
-/// Polygons are triangulated: as fans in OFF and OBJ, by vcglib in PLY.
+/// Polygons are triangulated as fans from their first vertex (all formats).
 /// Malformed files (truncated, garbage, indices out of range, empty) throw.
 /// \throws std::runtime_error with a one-line message.
 template <class MeshType>
@@ -370,9 +651,9 @@ void loadMesh(const std::string &path, MeshType &m) {
   if (probe.tellg() <= 0) throw std::runtime_error(path + ": cannot read mesh (empty file)");
   probe.close();
   m.Clear();
-  // STL, OFF and OBJ are read by the strict readers above (vcglib's importers
-  // accept out-of-range indices, drop faces silently or read past the end of
-  // malformed files); PLY by vcglib, whose PLY importer checks indices and length.
+  // Every format is read by the strict readers above: vcglib's importers
+  // accept out-of-range indices, drop faces silently, read past the end of
+  // malformed files, or (PLY) read freed memory on a bad polygon index.
   try {
     if (ext == "stl") {
       detail::buildFromSoup(detail::readStl(path), m);
@@ -382,12 +663,9 @@ void loadMesh(const std::string &path, MeshType &m) {
       const std::string text((std::istreambuf_iterator<char>(file)), {});
       detail::buildFromPolygons(ext == "off" ? detail::parseOff(text) : detail::parseObj(text), m);
     } else {
-      detail::checkPlyHeader(path);
-      int mask = 0;
-      using Importer = vcg::tri::io::Importer<MeshType>;
-      const int err = Importer::Open(m, path.c_str(), mask);
-      if (err != 0 && Importer::ErrorCritical(err))
-        throw std::runtime_error(Importer::ErrorMsg(err));
+      std::ifstream file(path, std::ios::binary);
+      const std::string bytes((std::istreambuf_iterator<char>(file)), {});
+      detail::buildFromPolygons(detail::readPly(bytes), m);
     }
   } catch (const std::exception &e) {  // also bad_alloc / length_error from absurd counts
     m.Clear();

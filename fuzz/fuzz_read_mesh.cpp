@@ -1,5 +1,5 @@
-// libFuzzer target: the mesh readers (apps/mesh_io.h over vcglib's PLY, OFF,
-// OBJ and STL importers), then the core on whatever they accept.
+// libFuzzer target: the mesh readers (apps/mesh_io.h: our own PLY, OFF,
+// OBJ and STL readers), then the core on whatever they accept.
 // Input: first byte selects the format, the rest is the file's content.
 #include <unistd.h>
 

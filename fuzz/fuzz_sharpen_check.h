@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>  // before vcglib: wrap/callback.h uses strcpy without including it
 #include <string>
 
 #include "edge_sharpener/edge_sharpener.h"

@@ -2,7 +2,7 @@
 # invariants over generated shapes x rigid motions x scales x multipliers x
 # resolutions; noise (paper, Figure 12); replay of the fuzz corpus and of every
 # fixed crash reproducer (tests/reliability/fuzz_corpus, tests/reliability/crashes).
-# Test names start with "Reliability" (ctest -R Reliability). The fuzzers
+# Test names: ctest -R 'Reliability|BadInput|SharpenInvariants|SharpenNoise'. The fuzzers
 # themselves (clang + libFuzzer) are built by scripts/fuzz.sh from fuzz/.
 if(TARGET edge-sharpener AND TARGET mesh-distance)
   edge_sharpener_test(reliability_tests

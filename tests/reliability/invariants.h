@@ -8,6 +8,7 @@
 // (vcglib's algorithm headers need complex.h first)
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/update/topology.h>
+#include <vcg/complex/append.h>
 #include <vcg/space/distance3.h>
 #include <vcg/space/triangle3.h>
 
@@ -18,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "edge_sharpener/mesh_types.h"
 #include "edge_sharpener/report.h"
 
 namespace es_reliability {
@@ -164,11 +166,16 @@ std::string sharpenProblem(M &input, M &output, const edge_sharpener::SharpenRep
   return "";
 }
 
-/// Number of faces of m that intersect another face (vcglib's test).
+/// Number of faces of m that intersect another face: vcglib's
+/// tri::Clean::SelfIntersections() on a double-precision copy. (On float
+/// coordinates its Moeller test reports nearly coplanar faces millimetres
+/// apart as intersecting, e.g. on the pyramid's flanks: docs/reliability.md.)
 template <class M>
 std::size_t selfIntersectingFaces(M &m) {
-  std::vector<typename M::FacePointer> faces;
-  vcg::tri::Clean<M>::SelfIntersections(m, faces);
+  edge_sharpener::MeshD d;
+  vcg::tri::Append<edge_sharpener::MeshD, M>::MeshCopy(d, m);
+  std::vector<edge_sharpener::MeshD::FacePointer> faces;
+  vcg::tri::Clean<edge_sharpener::MeshD>::SelfIntersections(d, faces);
   std::sort(faces.begin(), faces.end());
   return std::unique(faces.begin(), faces.end()) - faces.begin();
 }

@@ -98,15 +98,21 @@ void copy(Mesh &dst, Mesh &src) {
 
 /// Max distance between corresponding vertices of two meshes with the same
 /// connectivity; a negative value when the connectivity differs.
-double maxDeviation(const Mesh &a, const Mesh &b) {
+/// Vertices the self-intersection guard moved back are skipped when
+/// `skipGuarded` (colorize paints them; their retreat is a threshold decision).
+double maxDeviation(const Mesh &a, const Mesh &b, bool skipGuarded = false) {
+  const vcg::Color4b guarded =
+      es::placementColor(es::Placement::IntersectionRevert, es::VertexLabel::Gray);
   if (a.vert.size() != b.vert.size() || a.face.size() != b.face.size()) return -1;
   for (std::size_t i = 0; i < a.face.size(); ++i)
     for (int k = 0; k < 3; ++k)
       if (vcg::tri::Index(a, a.face[i].cV(k)) != vcg::tri::Index(b, b.face[i].cV(k))) return -1;
   double worst = 0;
-  for (std::size_t i = 0; i < a.vert.size(); ++i)
+  for (std::size_t i = 0; i < a.vert.size(); ++i) {
+    if (skipGuarded && (a.vert[i].cC() == guarded || b.vert[i].cC() == guarded)) continue;
     worst =
         std::max(worst, (es_reliability::pos(a.vert[i]) - es_reliability::pos(b.vert[i])).Norm());
+  }
   return worst;
 }
 
@@ -122,6 +128,7 @@ TEST_P(SharpenInvariants, HoldOnShapeUnderMotionScaleAndResharpening) {
   const double diagonal = es_reliability::bboxDiagonal(input);
   es::SharpenOptions opt;
   opt.smoothMultiplier = c.multiplier;
+  opt.colorize = true;  // marks the vertices the self-intersection guard moved back
 
   // Invariants of the result.
   Mesh base;
@@ -141,6 +148,7 @@ TEST_P(SharpenInvariants, HoldOnShapeUnderMotionScaleAndResharpening) {
   // Rigid motion, then similarity with a scale far from 1.
   std::mt19937 rng(1000 + c.index);
   double deviation[2] = {0, 0};
+  bool flips[2] = {false, false};
   for (int k = 0; k < 2; ++k) {
     const double scale = k == 0 ? 1.0 : kScales[c.index % 4];
     const Similarity s = randomSimilarity(rng, scale, diagonal);
@@ -150,19 +158,29 @@ TEST_P(SharpenInvariants, HoldOnShapeUnderMotionScaleAndResharpening) {
     const es::SharpenReport rm = es::sharpen(moved, opt);
     copy(expected, base);
     transform(expected, s);
-    // Smooth/chamfer decisions are thresholds on float data: rounding after
-    // a motion can flip some (11 of 72 cases measured, up to 20% of the
-    // chamfer edges on the pyramid). Then the results must still agree to
-    // within one marching-cubes cell.
-    deviation[k] = maxDeviation(moved, expected);
-    if (deviation[k] >= 0) {
+    // Smooth/chamfer decisions and the self-intersection guard's retreats
+    // are thresholds on float data: rounding the moved coordinates to float
+    // can flip some (docs/reliability.md: 11 of 72 cases flip a
+    // classification, none when the coordinates are double). Then the
+    // results must still agree to within one marching-cubes cell.
+    // The guard's retreats are such decisions too: the vertices it moved
+    // back are compared by the distance bound only, every other vertex
+    // strictly.
+    deviation[k] = maxDeviation(moved, expected, true);
+    const bool decisionsFlipped = deviation[k] < 0 ||
+                                  rm.placement.byOutcome != r.placement.byOutcome ||
+                                  rm.intersections.rounds != r.intersections.rounds;
+    flips[k] = decisionsFlipped;
+    if (!decisionsFlipped) {
       deviation[k] /= diagonal * scale;
       EXPECT_LE(deviation[k], kMotionTolerance) << "scale " << scale;
-    } else {
+    }
+    if (decisionsFlipped || r.intersections.rounds > 0) {
       es::DistanceOptions dopt;
       dopt.faceSamples = 20000;
-      deviation[k] = es::measureDistance(moved, expected, dopt).max() / (diagonal * scale);
-      EXPECT_LE(deviation[k], c.fraction) << "decisions flipped, scale " << scale;
+      const double distance = es::measureDistance(moved, expected, dopt).max() / (diagonal * scale);
+      EXPECT_LE(distance, c.fraction) << "decisions flipped, scale " << scale;
+      if (decisionsFlipped) deviation[k] = distance;
     }
   }
 
@@ -181,22 +199,20 @@ TEST_P(SharpenInvariants, HoldOnShapeUnderMotionScaleAndResharpening) {
   if (c.fraction == kFractions[0]) {
     intersectingIn = es_reliability::selfIntersectingFaces(input);
     intersectingOut = es_reliability::selfIntersectingFaces(base);
-    // Known, open (issue 6): on the tilted L-block, the pyramid and the
-    // sphere at 3% the paper's method creates a few self-intersecting faces;
-    // the measured counts are the ceiling, every other case must create none.
-    const std::size_t known = c.shape == "lblock_tilted" ? 14
-                              : c.shape == "sphere"      ? 18
-                              : c.shape == "pyramid"     ? 5
-                                                         : 0;
-    EXPECT_LE(intersectingOut, intersectingIn + known);
+    // Before the intersection guard (intersection_guard.h) the tilted
+    // L-block, the pyramid and the sphere got up to 15 self-intersecting
+    // faces here; now none may appear.
+    EXPECT_LE(intersectingOut, intersectingIn);
   }
   std::printf(
       "RELIABILITY-INVARIANTS %s %.1f%% x%.1f faces %zu->%zu moved %zu inherited %zu | "
-      "motion dev %.2e, similarity(x%g) dev %.2e | resharpen moved %zu, dist %.4f%% | "
-      "self-intersecting %zu->%zu\n",
+      "motion dev %.2e%s, similarity(x%g) dev %.2e%s | resharpen moved %zu, dist %.4f%% | "
+      "self-intersecting %zu->%zu (guard: %zu pairs, %zu reverted)\n",
       c.shape.c_str(), c.fraction * 100, c.multiplier, r.inputFaces, r.outputFaces,
-      r.placement.moved(), r.cleanup.inherited, deviation[0], kScales[c.index % 4], deviation[1],
-      rr.placement.moved(), resharpen, intersectingIn, intersectingOut);
+      r.placement.moved(), r.cleanup.inherited, deviation[0], flips[0] ? " (flipped)" : "",
+      kScales[c.index % 4], deviation[1], flips[1] ? " (flipped)" : "", rr.placement.moved(),
+      resharpen, intersectingIn, intersectingOut, r.intersections.intersectingPairs,
+      r.intersections.reverted);
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, SharpenInvariants, ::testing::ValuesIn(allCases()),
@@ -212,10 +228,14 @@ TEST(SharpenInvariantsComponents, TwoCopiesSharpenLikeOne) {
   const shapes::Shape &shape = shapes::shapeByName("lblock");
   Mesh one, two, single;
   shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, 0.02), one);
+  // Coordinates on a 2^-20 grid, so that the shift by 4 below is exact in
+  // float (it is not for arbitrary coordinates near 0).
+  for (auto &v : one.vert)
+    for (int c = 0; c < 3; ++c) v.P()[c] = std::ldexp(std::round(std::ldexp(v.P()[c], 20)), -20);
   copy(two, one);
   Mesh shifted;
   copy(shifted, one);
-  // Shift by a power of two larger than the shape: exact in float for these coordinates.
+  // Shift by a power of two larger than the shape: exact on the 2^-20 grid.
   for (auto &v : shifted.vert) v.P()[0] += 4.0f;
   vcg::tri::Append<Mesh, Mesh>::Mesh(two, shifted);
   vcg::tri::UpdateTopology<Mesh>::FaceFace(two);
@@ -224,7 +244,12 @@ TEST(SharpenInvariantsComponents, TwoCopiesSharpenLikeOne) {
   const es::SharpenReport r2 = es::sharpen(two, {});
   EXPECT_EQ(r2.filters.chamferEdges, 2 * r1.filters.chamferEdges);
   EXPECT_EQ(r2.outputFaces, 2 * r1.outputFaces);
-  EXPECT_EQ(r2.placement.moved(), 2 * r1.placement.moved());
+  // The self-intersection guard's retreats decide touching contacts, which
+  // the shifted copy's rounding can make or break: moved + retreated match.
+  const auto placed = [](const es::SharpenReport &r) {
+    return r.placement.moved() + r.placement.count(es::Placement::IntersectionRevert);
+  };
+  EXPECT_EQ(placed(r2), 2 * placed(r1));
   // Same geometry per component, as multisets of face centroids.
   auto centroids = [](const Mesh &m, bool left) {
     std::vector<std::array<double, 3>> out;

@@ -32,18 +32,19 @@ enum class VertexLabel : std::uint8_t {
 /// Where an inserted vertex ended up, and why (the fallback reasons are the
 /// paper's degenerate cases, each counted in the report).
 enum class Placement : std::uint8_t {
-  Original,         ///< not an inserted vertex: never moved
-  Moved,            ///< moved onto the plane intersection
-  ParallelPlanes,   ///< chamfer edge: the two planes are (nearly) parallel
-  CoplanarNormals,  ///< corner: the three plane normals are (nearly) coplanar
-  NoSupportPlane,   ///< an endpoint's red-triangle normal sum vanishes
-  EdgeTooLong,      ///< moving would create an edge longer than the input's longest
-  MixedConvexity,   ///< chamfer bordered by a concave and a convex side
-  DegenerateRevert, ///< moved back by the degenerate-triangle cleanup
-  FarFromChamfer,   ///< extended method: the planes meet farther off than their angle allows
-  CurvedSupport,    ///< extended method: the regions curve like a blend, not a sharp edge
+  Original,            ///< not an inserted vertex: never moved
+  Moved,               ///< moved onto the plane intersection
+  ParallelPlanes,      ///< chamfer edge: the two planes are (nearly) parallel
+  CoplanarNormals,     ///< corner: the three plane normals are (nearly) coplanar
+  NoSupportPlane,      ///< an endpoint's red-triangle normal sum vanishes
+  EdgeTooLong,         ///< moving would create an edge longer than the input's longest
+  MixedConvexity,      ///< chamfer bordered by a concave and a convex side
+  DegenerateRevert,    ///< moved back by the degenerate-triangle cleanup
+  FarFromChamfer,      ///< extended method: the planes meet farther off than their angle allows
+  CurvedSupport,       ///< extended method: the regions curve like a blend, not a sharp edge
+  IntersectionRevert,  ///< moved back: a face of it intersected another face
 };
-constexpr int kPlacementCount = 10;
+constexpr int kPlacementCount = 11;
 
 const char *toString(Placement p);
 
@@ -59,6 +60,7 @@ inline const char *toString(Placement p) {
     case Placement::DegenerateRevert: return "degenerate_revert";
     case Placement::FarFromChamfer: return "far_from_chamfer";
     case Placement::CurvedSupport: return "curved_support";
+    case Placement::IntersectionRevert: return "intersection_revert";
   }
   return "unknown";
 }

@@ -1,10 +1,11 @@
 // Parameters of Edge-Sharpener (Attene, Falcidieno, Rossignac, Spagnuolo 2003).
 #pragma once
 
-#include <wrap/callback.h>
-
 #include <cmath>
-#include <cstring>  // wrap/callback.h uses strcpy without including it
+// clang-format off
+#include <cstring>  // wrap/callback.h uses strcpy without including it: keep it first
+#include <wrap/callback.h>
+// clang-format on
 
 namespace edge_sharpener {
 

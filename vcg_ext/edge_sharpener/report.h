@@ -67,6 +67,16 @@ struct CleanupStats {
   std::size_t inherited = 0;   ///< degenerate children of input slivers, no vertex moved
 };
 
+/// Stage 6b: moved vertices sent back to rest because a face of theirs
+/// intersected another face (intersection_guard.h).
+struct IntersectionStats {
+  std::size_t intersectingPairs = 0;  ///< intersecting face pairs with a moved vertex, first round
+  std::size_t reverted = 0;           ///< inserted vertices sent back (counted in placement too)
+  std::size_t zoneReverted = 0;       ///< extended method: projected zone vertices back at rest
+  std::size_t rounds = 0;             ///< rounds of search + revert that found an intersection
+  std::size_t remaining = 0;          ///< intersecting pairs left with no moved vertex (at rest)
+};
+
 /// Extended method: segmentation and zone labelling.
 struct ExtendedStats {
   std::size_t regions = 0;               ///< smooth regions kept
@@ -89,6 +99,7 @@ struct SharpenReport {
   SubdivisionStats subdivision;
   PlacementStats placement;
   CleanupStats cleanup;
+  IntersectionStats intersections;
   bool extendedMethod = false;
   ExtendedStats extended;        ///< filled by the extended method only
   bool geometryChanged = false;  ///< false for detection-only runs
@@ -135,6 +146,12 @@ inline std::string formatReport(const SharpenReport &r) {
     << r.cleanup.collapses << " collapses, " << r.cleanup.flips << " flips, "
     << r.cleanup.reverted << " vertices reverted, " << r.cleanup.remaining << " remaining, "
     << r.cleanup.inherited << " inherited from input slivers\n";
+  s << "self-intersections: " << r.intersections.intersectingPairs
+    << " intersecting face pairs found, " << r.intersections.reverted
+    << " inserted vertices reverted";
+  if (r.extendedMethod) s << ", " << r.intersections.zoneReverted << " zone vertices reverted";
+  s << " (" << r.intersections.rounds << " rounds), " << r.intersections.remaining
+    << " remaining\n";
   s << "output: " << r.outputVertices << " vertices, " << r.outputFaces << " faces\n";
   return s.str();
 }

@@ -143,6 +143,29 @@ def main():
     pf = [tuple(range(4, -1, -1)), tuple(range(5, 10))]
     pf += [(k, (k + 1) % 5, (k + 1) % 5 + 5, k + 5) for k in range(5)]
     write("pentagonal_prism.obj", obj(pv, pf))
+    # PLY polygons with an index out of range after the third vertex: vcglib's
+    # importer read freed memory here (fuzz_read_mesh); now our reader refuses it.
+    write("polygon_out_of_range.ply", ply_ascii(CUBE_V, CUBE_QUADS[:5] + [(3, 0, 4, 99)]))
+    write("polygon_short.ply", ply_ascii(TETRA_V, TETRA_T[:3] + [(0, 1)]))
+    # Valid PLY variants our reader must handle: big endian with double
+    # coordinates, extra vertex properties and an extra element; triangle strips.
+    head = ("ply\nformat binary_big_endian 1.0\ncomment written by make_bad_inputs.py\n"
+            f"element vertex {len(CUBE_V)}\nproperty double x\nproperty double y\n"
+            "property double z\nproperty uchar red\nproperty list uchar float extra\n"
+            f"element face {len(CUBE_QUADS)}\nproperty list uint8 uint32 vertex_indices\n"
+            "property int flags\nelement material 1\nproperty float shininess\nend_header\n")
+    body = b"".join(struct.pack(">3dBBf", *v, 7, 1, 0.5) for v in CUBE_V)
+    body += b"".join(struct.pack(">B4Ii", 4, *q, -1) for q in CUBE_QUADS)
+    body += struct.pack(">f", 2.0)
+    write("cube_big_endian.ply", head.encode() + body)
+    # The tetrahedron as triangle strips (every other triangle flipped, -1 restarts a strip).
+    strips = [[2, 1, 0, 3, -1, 0, 3, 2], [1, 2, 3]]
+    head = ["ply", "format ascii 1.0", f"element vertex {len(TETRA_V)}", "property float x",
+            "property float y", "property float z", f"element tristrips {len(strips)}",
+            "property list int int vertex_indices", "end_header"]
+    body = [" ".join(str(c) for c in v) for v in TETRA_V]
+    body += [f"{len(s)} " + " ".join(str(i) for i in s) for s in strips]
+    write("tetra_tristrips.ply", "\n".join(head + body) + "\n")
     # A single triangle.
     write("one_triangle.off", off([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)]))
     # A valid binary STL triangle soup (vertices merged on load).

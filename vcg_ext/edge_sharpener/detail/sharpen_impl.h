@@ -10,6 +10,7 @@
 #include "../feature_zones.h"
 #include "../filters.h"
 #include "../input_check.h"
+#include "../intersection_guard.h"
 #include "../placement.h"
 #include "../smooth_edges.h"
 #include "../subdivision.h"
@@ -112,6 +113,7 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   detail::reportProgress(opt, 40, "Edge-Sharpener: subdivision");
   const SplitPlan plan = planSplits(m, labels);
   report.subdivision = subdivide(m, plan, labels);
+  const auto restBeforeProjection = positionsBeforeProjection(m, plan, opt);
 
   detail::reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
   report.placement =
@@ -127,6 +129,9 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
 
   detail::reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
   report.cleanup = removeDegenerateTriangles(m, plan, labels, opt.degenerateAngleRad);
+  report.intersections =
+      revertSelfIntersections(m, plan, labels, restBeforeProjection, opt.degenerateAngleRad);
+  report.extended.projectedVertices -= report.intersections.zoneReverted;
   // Outcomes as they stand after cleanup (collapsed vertices are gone).
   report.placement.byOutcome.fill(0);
   report.placement.maxDisplacement = 0;

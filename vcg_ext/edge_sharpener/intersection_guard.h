@@ -1,0 +1,531 @@
+// Stage 6b: no new self-intersections. Placing inserted vertices on plane
+// intersections (and, in the extended method, projecting zone vertices onto
+// their region's plane) can push a triangle through another one where two
+// features come close (a thin wall, a concave corner, a coarse sphere). This
+// stage finds every face incident to a moved vertex that intersects another
+// face of the mesh (vcglib's face-face test, the one tri::Clean::
+// SelfIntersections uses) and sends the responsible vertex back to its rest
+// position on the input surface, repeating on the faces it changed until no
+// such intersection is left.
+//
+// Cost: one pass over all faces per round against a hashed grid of the faces
+// that changed (the first round: the faces of moved vertices), so near-linear
+// in the mesh size; later rounds only look at the faces of reverted vertices.
+#pragma once
+
+#include <vcg/complex/complex.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+// (vcglib's algorithm headers need complex.h first)
+#include <vcg/complex/algorithms/clean.h>
+
+#include "mesh_labels.h"
+#include "options.h"
+#include "report.h"
+#include "subdivision.h"
+
+namespace edge_sharpener {
+
+namespace detail {
+
+inline int maxThreads() {
+#ifdef _OPENMP
+  return std::max(1, omp_get_max_threads());
+#else
+  return 1;
+#endif
+}
+
+inline int threadNumber() {
+#ifdef _OPENMP
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
+
+/// Face bounding box in double precision.
+struct FaceBox {
+  double lo[3], hi[3];
+  template <class FaceType>
+  explicit FaceBox(const FaceType &f) {
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = hi[c] = double(f.cV(0)->cP()[c]);
+      for (int k = 1; k < 3; ++k) {
+        lo[c] = std::min(lo[c], double(f.cV(k)->cP()[c]));
+        hi[c] = std::max(hi[c], double(f.cV(k)->cP()[c]));
+      }
+    }
+  }
+  FaceBox() = default;
+  bool overlaps(const FaceBox &b) const {
+    for (int c = 0; c < 3; ++c)
+      if (lo[c] > b.hi[c] || b.lo[c] > hi[c]) return false;
+    return true;
+  }
+};
+
+/// Whether two distinct faces intersect: vcglib's test (the one
+/// tri::Clean::SelfIntersections() applies: TestFaceFaceIntersection), on
+/// the coordinates in double precision. Faces sharing an edge are not tested;
+/// faces sharing one vertex intersect when the edge opposite the shared
+/// vertex in one, pulled halfway towards it, crosses the other; other faces
+/// by Moeller's triangle-triangle test, touching included. (In float,
+/// Moeller's test reports nearly coplanar faces millimetres apart as
+/// intersecting: its interval arithmetic divides by the tiny distances to
+/// the other face's plane.)
+template <class MeshType, class FaceType = typename MeshType::FaceType>
+bool facesIntersect(FaceType *f, FaceType *g) {
+  const int shared = vcg::face::CountSharedVertex(f, g);
+  if (shared == 2) return false;
+  if (shared == 3) return true;
+  Vec3 p[3], q[3];
+  for (int k = 0; k < 3; ++k) p[k] = positionOf(f->cV(k)), q[k] = positionOf(g->cV(k));
+  if (shared == 0) return vcg::NoDivTriTriIsect(p[0], p[1], p[2], q[0], q[1], q[2]);
+  int i0 = 0, i1 = 0;
+  vcg::face::FindSharedVertex(f, g, i0, i1);
+  // As vcglib: the first segment that meets the other face decides.
+  const Vec3 half = p[i0] * 0.5;
+  for (int side = 0; side < 2; ++side) {
+    const Vec3 *a = side == 0 ? p : q, *b = side == 0 ? q : p;
+    const int ia = side == 0 ? i0 : i1;
+    const vcg::Segment3<double> seg(a[(ia + 1) % 3] * 0.5 + half, a[(ia + 2) % 3] * 0.5 + half);
+    double u, v;
+    if (vcg::IntersectionSegmentTriangle(seg, vcg::Triangle3<double>(b[0], b[1], b[2]), u, v)) {
+      constexpr double kEps = 1e-6;  // vcglib's EPSIL
+      return !(u + v >= 1 || u <= kEps || v <= kEps);
+    }
+  }
+  return false;
+}
+
+/// Calls visit(slot, gi) for every face gi of the mesh whose bounding box
+/// overlaps boxes[slot] (once per pair), through a hashed grid of `boxes`
+/// and one pass over the faces that reads only per-vertex cell indices
+/// (computed once per vertex): near-linear in the mesh size, and cheap for
+/// the faces far from every box.
+template <class MeshType, class Visit>
+void forEachBoxOverlap(const MeshType &m, const std::vector<FaceBox> &boxes, Visit &&visit) {
+  if (boxes.empty()) return;
+  FaceBox all = boxes[0];
+  double extentSum = 0;
+  for (const FaceBox &b : boxes) {
+    double extent = 0;
+    for (int c = 0; c < 3; ++c) {
+      all.lo[c] = std::min(all.lo[c], b.lo[c]);
+      all.hi[c] = std::max(all.hi[c], b.hi[c]);
+      extent = std::max(extent, b.hi[c] - b.lo[c]);
+    }
+    extentSum += extent;
+  }
+  double span = 0;
+  for (int c = 0; c < 3; ++c) span = std::max(span, all.hi[c] - all.lo[c]);
+  // Cell: the mean box extent, at least 2^-20 of the span (cell indices fit in 21 bits).
+  double cell = std::max(extentSum / double(boxes.size()), span / double(1 << 20));
+  if (!(cell > 0) || !std::isfinite(cell)) cell = 1;
+  const double inv = 1.0 / cell;
+  std::int32_t last[3];  // largest cell index inside `all`
+  for (int c = 0; c < 3; ++c)
+    last[c] = std::int32_t(std::min((all.hi[c] - all.lo[c]) * inv, double(1 << 20)));
+  // Cell index along axis c; -1 / last + 1 outside `all` (and for NaN: -1).
+  const auto cellOf = [&](double x, int c) -> std::int32_t {
+    const double t = (x - all.lo[c]) * inv;
+    if (!(t >= 0)) return -1;
+    return t > last[c] ? last[c] + 1 : std::int32_t(t);
+  };
+  const auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
+    return std::uint64_t(x) | std::uint64_t(y) << 21 | std::uint64_t(z) << 42;
+  };
+  constexpr std::uint64_t kBits = std::uint64_t(1) << 20;
+  const auto bit = [](std::uint64_t k) { return (k * 0x9E3779B97F4A7C15ull) >> 44; };
+  std::vector<std::uint64_t> occupied(kBits / 64, 0);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;  // (cell key, slot)
+  std::vector<std::uint32_t> oversized;                          // slots in too many cells
+  constexpr std::int64_t kMaxCellsPerBox = 4096, kMaxCellsPerFace = 64;
+  entries.reserve(boxes.size() * 4);
+  for (std::size_t q = 0; q < boxes.size(); ++q) {
+    std::int32_t lo[3], hi[3];
+    std::int64_t cells = 1;
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::max(cellOf(boxes[q].lo[c], c), 0);
+      hi[c] = std::min(cellOf(boxes[q].hi[c], c), last[c]);
+      cells *= std::int64_t(hi[c]) - lo[c] + 1;
+    }
+    if (cells > kMaxCellsPerBox) {
+      oversized.push_back(std::uint32_t(q));
+      continue;
+    }
+    for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
+      for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
+        for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+          const std::uint64_t k = key(x, y, z), b = bit(k);
+          entries.emplace_back(k, std::uint32_t(q));
+          occupied[b >> 6] |= std::uint64_t(1) << (b & 63);
+        }
+  }
+  std::sort(entries.begin(), entries.end());
+  // Open-addressing table: cell key -> first entry of that cell.
+  std::size_t tableSize = 16;
+  while (tableSize < 2 * entries.size()) tableSize *= 2;
+  constexpr std::uint64_t kEmpty = ~std::uint64_t(0);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> table(tableSize, {kEmpty, 0});
+  const auto slotOfKey = [&](std::uint64_t k) {
+    std::size_t i = std::size_t((k * 0x9E3779B97F4A7C15ull) >> 20) & (tableSize - 1);
+    while (table[i].first != kEmpty && table[i].first != k) i = (i + 1) & (tableSize - 1);
+    return i;
+  };
+  for (std::size_t e = 0; e < entries.size(); ++e)
+    if (e == 0 || entries[e].first != entries[e - 1].first)
+      table[slotOfKey(entries[e].first)] = {entries[e].first, std::uint32_t(e)};
+  std::vector<std::int32_t> vertexCell(3 * m.vert.size(), -1);
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    if (!m.vert[v].IsD())
+      for (int c = 0; c < 3; ++c) vertexCell[3 * v + c] = cellOf(double(m.vert[v].cP()[c]), c);
+
+  // The pass over the faces runs on every core; each thread keeps its own
+  // once-per-pair stamps and tells `visit` its number.
+  constexpr std::size_t kParallelMin = 50000;
+  const int threads = m.face.size() >= kParallelMin ? maxThreads() : 1;
+  std::vector<std::vector<std::uint32_t>> stamps(
+      threads, std::vector<std::uint32_t>(boxes.size(), std::numeric_limits<std::uint32_t>::max()));
+  const std::int64_t faceCount = std::int64_t(m.face.size());
+#pragma omp parallel for schedule(static, 8192) num_threads(threads)
+  for (std::int64_t gi = 0; gi < faceCount; ++gi) {
+    const int thread = threadNumber();
+    std::vector<std::uint32_t> &stamp = stamps[thread];
+    const auto &g = m.face[gi];
+    if (g.IsD()) continue;
+    bool haveBox = false;
+    FaceBox gb;
+    const auto test = [&](std::uint32_t q) {
+      if (stamp[q] == gi) return;
+      stamp[q] = std::uint32_t(gi);
+      if (!haveBox) gb = FaceBox(g), haveBox = true;
+      if (gb.overlaps(boxes[q])) visit(thread, q, std::uint32_t(gi));
+    };
+    for (const std::uint32_t q : oversized) test(q);
+    std::int32_t lo[3], hi[3];
+    std::int64_t cells = 1;
+    bool outside = false;
+    const std::int32_t *c0 = &vertexCell[3 * vcg::tri::Index(m, g.cV(0))];
+    const std::int32_t *c1 = &vertexCell[3 * vcg::tri::Index(m, g.cV(1))];
+    const std::int32_t *c2 = &vertexCell[3 * vcg::tri::Index(m, g.cV(2))];
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::max(std::min({c0[c], c1[c], c2[c]}), 0);
+      hi[c] = std::min(std::max({c0[c], c1[c], c2[c]}), last[c]);
+      outside |= lo[c] > hi[c];
+      cells *= std::int64_t(hi[c]) - lo[c] + 1;
+    }
+    if (outside) continue;
+    if (cells > kMaxCellsPerFace) {
+      for (std::size_t q = 0; q < boxes.size(); ++q) test(std::uint32_t(q));
+      continue;
+    }
+    for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
+      for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
+        for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+          const std::uint64_t k = key(x, y, z), b = bit(k);
+          if (!(occupied[b >> 6] >> (b & 63) & 1)) continue;
+          const auto &found = table[slotOfKey(k)];
+          if (found.first != k) continue;
+          for (std::size_t e = found.second; e < entries.size() && entries[e].first == k; ++e)
+            test(entries[e].second);
+        }
+  }
+}
+
+/// Pairs of intersecting faces with at least one face in `query` (face
+/// indices), smaller index first, sorted and unique.
+template <class MeshType>
+std::vector<std::pair<std::uint32_t, std::uint32_t>> findIntersectingPairs(
+    MeshType &m, const std::vector<std::uint32_t> &query) {
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(maxThreads());
+  std::vector<FaceBox> boxes;
+  boxes.reserve(query.size());
+  for (const std::uint32_t fi : query) boxes.emplace_back(m.face[fi]);
+  std::vector<char> isQuery(m.face.size(), 0);
+  for (const std::uint32_t fi : query) isQuery[fi] = 1;
+  forEachBoxOverlap(m, boxes, [&](int thread, std::uint32_t q, std::uint32_t gi) {
+    const std::uint32_t qi = query[q];
+    if (qi == gi || (isQuery[gi] && gi < qi)) return;  // a pair of query faces: tested once
+    const std::uint32_t a = std::min(qi, gi), b = std::max(qi, gi);
+    if (facesIntersect<MeshType>(&m.face[a], &m.face[b])) found[thread].emplace_back(a, b);
+  });
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (const auto &list : found) pairs.insert(pairs.end(), list.begin(), list.end());
+  std::sort(pairs.begin(), pairs.end());  // whatever the thread count: same order
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+}  // namespace detail
+
+/// Positions of the original vertices before the extended method projects
+/// zone vertices (the rest positions revertSelfIntersections() returns them
+/// to); empty for the paper's method, whose original vertices never move.
+template <class MeshType>
+std::vector<typename MeshType::CoordType> positionsBeforeProjection(const MeshType &m,
+                                                                    const SplitPlan &plan,
+                                                                    const SharpenOptions &opt) {
+  std::vector<typename MeshType::CoordType> rest;
+  if (opt.method != Method::Extended) return rest;
+  rest.reserve(plan.originalVertexCount);
+  for (std::size_t v = 0; v < plan.originalVertexCount; ++v) rest.push_back(m.vert[v].cP());
+  return rest;
+}
+
+/// Stage 6b: moves vertices back towards rest until no face incident to a
+/// moved vertex intersects another face (facesIntersect(): vcglib's test for
+/// faces sharing a vertex, a contact-tolerant Moeller test otherwise). A
+/// moved vertex is an inserted vertex placed by placeInsertedVertices()
+/// (Placement::Moved), or an original vertex whose position differs from
+/// `originalRest` (extended method: a projected zone vertex).
+///
+/// Each round finds the intersecting pairs among the faces that changed.
+/// Each pair retreats one moved vertex of its two faces along the segment to
+/// its rest position: to the farthest multiple of 1/16 of its displacement
+/// at which none of its faces intersects a face nearby, folds over (normal
+/// turned against the one at rest) or gets an angle below
+/// `degenerateAngleRad`; else to rest. Of the pair's moved vertices, the one
+/// that can stay farthest out retreats (ties: the one in more pairs, then
+/// the smaller displacement, then the lower index). A vertex sent to rest
+/// that leaves a face below that angle sends the face's other moved
+/// vertices to rest too, so cleanup's guarantee (no such face holds a moved
+/// vertex) is kept. Inserted vertices that retreat are labelled
+/// Placement::IntersectionRevert. Deterministic (serial, index order).
+/// \pre removeDegenerateTriangles() ran (deleted elements not yet compacted).
+template <class MeshType>
+IntersectionStats revertSelfIntersections(
+    MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels,
+    const std::vector<typename MeshType::CoordType> &originalRest, double degenerateAngleRad) {
+  using Coord = typename MeshType::CoordType;
+  IntersectionStats s;
+  const std::size_t n0 = plan.originalVertexCount;
+  std::vector<char> moved(m.vert.size(), 0);
+  std::size_t movedCount = 0;
+  for (std::size_t v = 0; v < m.vert.size(); ++v) {
+    if (m.vert[v].IsD()) continue;
+    moved[v] = v >= n0 ? labels.placement[&m.vert[v]] == Placement::Moved
+                       : !originalRest.empty() && !(m.vert[v].cP() == originalRest[v]);
+    movedCount += moved[v];
+  }
+  if (movedCount == 0) return s;
+
+  // Faces of the moved vertices, and for each moved vertex its faces (CSR).
+  std::vector<std::uint32_t> query, offset(m.vert.size() + 1, 0), incident;
+  for (std::size_t fi = 0; fi < m.face.size(); ++fi) {
+    const auto &f = m.face[fi];
+    if (f.IsD()) continue;
+    bool any = false;
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t v = vcg::tri::Index(m, f.cV(k));
+      if (moved[v]) ++offset[v + 1], any = true;
+    }
+    if (any) query.push_back(std::uint32_t(fi));
+  }
+  for (std::size_t v = 0; v + 1 < offset.size(); ++v) offset[v + 1] += offset[v];
+  incident.resize(offset.back());
+  {
+    std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
+    for (const std::uint32_t fi : query)
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t v = vcg::tri::Index(m, m.face[fi].cV(k));
+        if (moved[v]) incident[fill[v]++] = fi;
+      }
+  }
+  const auto restOf = [&](std::size_t v) {
+    return v >= n0 ? Coord::Construct(plan.inserted[v - n0].rest) : originalRest[v];
+  };
+  // Position of each moved vertex as placed, and how far along it still is,
+  // in steps of 1/kFull of its displacement (kFull: all the way).
+  constexpr int kFull = 16;
+  std::vector<Coord> placed(m.vert.size());
+  std::vector<std::uint8_t> level(m.vert.size(), 0);
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    if (moved[v]) placed[v] = m.vert[v].cP(), level[v] = kFull;
+  const auto positionAt = [&](std::size_t v, int lv) {
+    if (lv == kFull) return placed[v];
+    const Vec3 r = Vec3::Construct(restOf(v));
+    return lv == 0 ? restOf(v)
+                   : Coord::Construct(r + (Vec3::Construct(placed[v]) - r) * (lv / double(kFull)));
+  };
+  const auto minAngleOf = [&](std::uint32_t fi) {
+    const auto &f = m.face[fi];
+    return minTriangleAngle(positionOf(f.cV(0)), positionOf(f.cV(1)), positionOf(f.cV(2)));
+  };
+  const auto normalOf = [&](std::uint32_t fi) {
+    const auto &f = m.face[fi];
+    const Vec3 a = positionOf(f.cV(0));
+    return (positionOf(f.cV(1)) - a) ^ (positionOf(f.cV(2)) - a);
+  };
+
+  std::vector<std::uint32_t> changedNow;
+  std::vector<char> justChanged(m.vert.size(), 0);
+  const auto markChanged = [&](std::size_t v) {
+    if (!justChanged[v]) changedNow.push_back(std::uint32_t(v)), justChanged[v] = 1;
+  };
+  const auto countRetreat = [&](std::size_t v) {
+    if (v < n0) return;  // zone vertices: counted when back at rest (revert)
+    if (labels.placement[&m.vert[v]] == Placement::Moved) ++s.reverted;
+    labels.placement[&m.vert[v]] = Placement::IntersectionRevert;
+  };
+
+  // To rest, with the degenerate-face cascade.
+  const auto revert = [&](std::size_t first) {
+    std::vector<std::size_t> stack{first};
+    while (!stack.empty()) {
+      const std::size_t v = stack.back();
+      stack.pop_back();
+      if (!moved[v]) continue;
+      countRetreat(v);
+      if (v < n0) ++s.zoneReverted;
+      moved[v] = 0;
+      level[v] = 0;
+      m.vert[v].P() = restOf(v);
+      markChanged(v);
+      for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
+        if (minAngleOf(incident[j]) >= degenerateAngleRad) continue;
+        for (int k = 0; k < 3; ++k) {
+          const std::size_t u = vcg::tri::Index(m, m.face[incident[j]].cV(k));
+          if (moved[u]) stack.push_back(u);
+        }
+      }
+    }
+  };
+  // Faces near each vertex of `vertices`: near its faces anywhere on its way back to rest.
+  const auto gatherNear = [&](const std::vector<std::uint32_t> &vertices) {
+    std::vector<detail::FaceBox> boxes;
+    std::vector<std::uint32_t> owner;
+    for (std::size_t r = 0; r < vertices.size(); ++r) {
+      const std::size_t v = vertices[r];
+      const Coord now = m.vert[v].cP();
+      for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
+        detail::FaceBox b(m.face[incident[j]]);
+        m.vert[v].P() = restOf(v);
+        const detail::FaceBox atRest(m.face[incident[j]]);
+        m.vert[v].P() = now;
+        for (int c = 0; c < 3; ++c)
+          b.lo[c] = std::min(b.lo[c], atRest.lo[c]), b.hi[c] = std::max(b.hi[c], atRest.hi[c]);
+        boxes.push_back(b);
+        owner.push_back(std::uint32_t(r));
+      }
+    }
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> hits(detail::maxThreads());
+    detail::forEachBoxOverlap(m, boxes, [&](int thread, std::uint32_t q, std::uint32_t gi) {
+      hits[thread].emplace_back(owner[q], gi);
+    });
+    std::vector<std::vector<std::uint32_t>> near(vertices.size());
+    for (const auto &list : hits)
+      for (const auto &[r, gi] : list) near[r].push_back(gi);
+    for (auto &list : near) {  // sorted: the same whatever the thread count
+      std::sort(list.begin(), list.end());
+      list.erase(std::unique(list.begin(), list.end()), list.end());
+    }
+    return near;
+  };
+  // The farthest level below the current one at which v's faces intersect
+  // none of `others`, fold over or get too small an angle (0: none). v stays put.
+  const auto feasibleLevel = [&](std::size_t v, const std::vector<std::uint32_t> &others) {
+    const Coord now = m.vert[v].cP();
+    std::vector<Vec3> restNormal;
+    m.vert[v].P() = restOf(v);
+    for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j)
+      restNormal.push_back(normalOf(incident[j]));
+    int found = 0;
+    for (int lv = level[v] - 1; lv > 0 && found == 0; --lv) {
+      m.vert[v].P() = positionAt(v, lv);
+      bool ok = true;
+      for (std::uint32_t j = offset[v]; j < offset[v + 1] && ok; ++j) {
+        const std::uint32_t fi = incident[j];
+        ok = minAngleOf(fi) >= degenerateAngleRad && normalOf(fi) * restNormal[j - offset[v]] > 0;
+        for (std::size_t o = 0; o < others.size() && ok; ++o)
+          if (others[o] != fi)
+            ok = !detail::facesIntersect<MeshType>(&m.face[std::min(fi, others[o])],
+                                                   &m.face[std::max(fi, others[o])]);
+      }
+      if (ok) found = lv;
+    }
+    m.vert[v].P() = now;
+    return found;
+  };
+
+  std::vector<std::uint32_t> score(m.vert.size(), 0), slot(m.vert.size(), 0);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> unfixable;
+  constexpr int kMaxRounds = 1000;
+  for (int round = 0; round < kMaxRounds && !query.empty(); ++round) {
+    const auto pairs = detail::findIntersectingPairs(m, query);
+    if (round == 0) s.intersectingPairs = pairs.size();
+    if (pairs.empty()) break;
+    ++s.rounds;
+    const auto forEachMoved = [&](const std::pair<std::uint32_t, std::uint32_t> &p, auto &&visit) {
+      for (const std::uint32_t fi : {p.first, p.second})
+        for (int k = 0; k < 3; ++k) {
+          const std::size_t v = vcg::tri::Index(m, m.face[fi].cV(k));
+          if (moved[v]) visit(v);
+        }
+    };
+    std::vector<std::uint32_t> candidates;
+    for (const auto &p : pairs)
+      forEachMoved(p, [&](std::size_t v) {
+        if (score[v]++ == 0) candidates.push_back(std::uint32_t(v));
+      });
+    std::sort(candidates.begin(), candidates.end());
+    for (std::size_t r = 0; r < candidates.size(); ++r) slot[candidates[r]] = std::uint32_t(r);
+    const auto near = gatherNear(candidates);
+    changedNow.clear();
+    for (const auto &p : pairs) {
+      bool taken = false;  // a vertex of the pair moved this round: look again next round
+      for (const std::uint32_t fi : {p.first, p.second})
+        for (int k = 0; k < 3; ++k) taken |= justChanged[vcg::tri::Index(m, m.face[fi].cV(k))] != 0;
+      if (taken) continue;
+      // The vertex that can stay farthest out; ties: in more pairs, smaller
+      // displacement, lower index.
+      std::size_t best = std::numeric_limits<std::size_t>::max();
+      int bestLevel = -1;
+      double bestDisplacement = 0;
+      forEachMoved(p, [&](std::size_t v) {
+        if (v == best) return;
+        const int lv = feasibleLevel(v, near[slot[v]]);
+        const double d = (positionOf(&m.vert[v]) - Vec3::Construct(restOf(v))).SquaredNorm();
+        const bool better = lv != bestLevel           ? lv > bestLevel
+                            : score[v] != score[best] ? score[v] > score[best]
+                            : d != bestDisplacement   ? d < bestDisplacement
+                                                      : v < best;
+        if (better) best = v, bestLevel = lv, bestDisplacement = d;
+      });
+      if (best == std::numeric_limits<std::size_t>::max()) {
+        unfixable.push_back(p);  // no moved vertex: present at rest (e.g. in the input)
+        continue;
+      }
+      if (bestLevel == 0) {
+        revert(best);
+        continue;
+      }
+      countRetreat(best);
+      level[best] = std::uint8_t(bestLevel);
+      m.vert[best].P() = positionAt(best, bestLevel);
+      markChanged(best);
+    }
+    for (const std::uint32_t v : candidates) score[v] = 0;
+    // Next round: the faces of the vertices just moved.
+    query.clear();
+    for (const std::uint32_t v : changedNow) {
+      query.insert(query.end(), incident.begin() + offset[v], incident.begin() + offset[v + 1]);
+      justChanged[v] = 0;
+    }
+    std::sort(query.begin(), query.end());
+    query.erase(std::unique(query.begin(), query.end()), query.end());
+  }
+  std::sort(unfixable.begin(), unfixable.end());
+  s.remaining = std::size_t(std::unique(unfixable.begin(), unfixable.end()) - unfixable.begin());
+  return s;
+}
+
+}  // namespace edge_sharpener
