@@ -2,15 +2,15 @@
 //
 //   edge-sharpener IN OUT [--multiplier X] [--no-length-check] [--colorize]
 //                         [--detect-only] [--json] [--reference EXACT]
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <optional>
 
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
-
+#include "capacity_hint.h"
 #include "edge_sharpener/edge_sharpener.h"
 #include "edge_sharpener/mesh_distance.h"
 #include "edge_sharpener/mesh_types.h"
@@ -43,23 +43,33 @@ bool sameFile(const std::string &a, const std::string &b) {
 }
 
 nlohmann::json distanceJson(const es::DistanceReport &d) {
-  return {{"max", d.max()},           {"mean", d.mean()},
-          {"rms", d.rms()},           {"max_percent", d.maxPercent()},
-          {"mean_percent", d.meanPercent()}, {"rms_percent", d.rmsPercent()},
+  return {{"max", d.max()},
+          {"mean", d.mean()},
+          {"rms", d.rms()},
+          {"max_percent", d.maxPercent()},
+          {"mean_percent", d.meanPercent()},
+          {"rms_percent", d.rmsPercent()},
           {"reference_diagonal", d.referenceDiagonal}};
 }
 
 int run(const CliOptions &cli) {
   if (sameFile(cli.input, cli.output))
     throw std::runtime_error("output would overwrite the input file " + cli.input);
+  es::io::returnLargeBlocksToTheSystem();  // see capacity_hint.h
   es::Mesh m;
+  if (!cli.detectOnly) es::io::reserveForSharpening(cli.input, m);  // see capacity_hint.h
   es::io::loadMesh(cli.input, m);
   // With --reference, keep the input to measure both sides against the exact shape.
-  es::Mesh reference, original;
+  // The input's distance is measured first: a mesh it cannot be measured on
+  // is refused before any output is written.
+  es::Mesh reference;
+  std::optional<es::DistanceReport> before, after;
   if (!cli.reference.empty()) {
     es::io::loadMesh(cli.reference, reference);
     if (reference.FN() == 0) throw std::runtime_error(cli.reference + ": reference has no faces");
+    es::Mesh original;
     vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(original, m);
+    before = es::measureDistance(original, reference);
   }
 
   es::SharpenOptions opt = cli.extended;  // carries the extended method's tuning flags
@@ -74,7 +84,8 @@ int run(const CliOptions &cli) {
   if (!cli.quiet && m.FN() >= kProgressFaces) opt.progress = stderrProgress;
 
   const auto start = std::chrono::steady_clock::now();
-  const es::SharpenReport report = cli.detectOnly ? es::detectChamfers(m, opt) : es::sharpen(m, opt);
+  const es::SharpenReport report =
+      cli.detectOnly ? es::detectChamfers(m, opt) : es::sharpen(m, opt);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -84,17 +95,14 @@ int run(const CliOptions &cli) {
   if (cli.detectOnly) saveMask |= mask::Mask::IOM_FACEFLAGS;
   es::io::saveMesh(m, cli.output, saveMask);
 
-  std::optional<es::DistanceReport> before, after;
-  if (!cli.reference.empty()) {
-    before = es::measureDistance(original, reference);
-    after = es::measureDistance(m, reference);
-  }
+  if (!cli.reference.empty()) after = es::measureDistance(m, reference);
   if (cli.json) {
     nlohmann::json j = es::reportToJson(report);
     j["seconds"] = seconds;
     j["input_file"] = cli.input;
     j["output_file"] = cli.output;
-    if (before) j["distance"] = {{"before", distanceJson(*before)}, {"after", distanceJson(*after)}};
+    if (before)
+      j["distance"] = {{"before", distanceJson(*before)}, {"after", distanceJson(*after)}};
     std::cout << j.dump(2) << "\n";
   } else if (!cli.quiet) {
     std::cout << es::formatReport(report) << "time: " << seconds << " s\n";

@@ -4,6 +4,8 @@
 #include "filter_edge_sharpener.h"
 
 #include <edge_sharpener/edge_sharpener.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/algorithms/update/selection.h>
 #include <vcg/complex/allocate.h>
 
@@ -82,7 +84,9 @@ const OptionParam kMethod{
     [](RichParameterList &par, const es::SharpenOptions &d) {
       par.addParam(RichEnum(
           "method", d.method == es::Method::Extended ? 1 : 0,
-          QStringList() << "Paper (2003)" << "Extended (feature zones)", "Method",
+          QStringList() << "Paper (2003)"
+                        << "Extended (feature zones)",
+          "Method",
           "<b>Paper</b>: the 2003 method exactly as published (chamfers one triangle wide).<br>"
           "<b>Extended</b>: smooth regions are segmented and the feature zone between them may "
           "be of any width (marching-cubes bands and corner patches); zone vertices are moved "
@@ -162,16 +166,43 @@ es::SharpenOptions readOptions(const FilterSpec &f, const RichParameterList &par
   return opt;
 }
 
-/// The core's preconditions: compact vectors and face-face adjacency.
+/// What the filter changes in MeshLab's per-mesh state (its data mask), so
+/// that a refused mesh is left as it was.
+struct MeshState {
+  bool hadFaceFace, hadFaceColor, hadVertColor;
+  explicit MeshState(const MeshModel &mm)
+      : hadFaceFace(mm.hasDataMask(MeshModel::MM_FACEFACETOPO) ||
+                    mm.cm.face.IsFFAdjacencyEnabled()),
+        hadFaceColor(mm.hasDataMask(MeshModel::MM_FACECOLOR)),
+        hadVertColor(mm.hasDataMask(MeshModel::MM_VERTCOLOR)) {}
+};
+
+/// The core's preconditions: compact vectors and the FF adjacency component.
+/// Only the component is enabled here (not MeshModel::updateDataMask, which
+/// would also run vcglib's UpdateTopology::FaceFace): the core's input check
+/// builds the adjacency itself with its linear-time builder (fast_topology.h,
+/// the same FF vcglib builds) and keeps it up to date through every change.
 void prepareTopology(MeshModel &mm) {
   vcg::tri::Allocator<CMeshO>::CompactEveryVector(mm.cm);
-  mm.updateDataMask(MeshModel::MM_FACEFACETOPO);  // enables and computes FF
+  if (!mm.cm.face.IsFFAdjacencyEnabled()) mm.cm.face.EnableFFAdjacency();
 }
 
-/// Called only once the input passed the check, so that a refused mesh does
-/// not gain colour layers.
+/// After the core call: FF adjacency is valid (built and maintained by the
+/// core). If the mesh had no FF component before, drop it again, so that
+/// MeshLab's mask and the mesh agree (a later filter that needs FF requests
+/// it and gets it built).
+void restoreTopologyState(MeshModel &mm, const MeshState &before) {
+  if (!before.hadFaceFace && mm.cm.face.IsFFAdjacencyEnabled()) mm.cm.face.DisableFFAdjacency();
+}
+
 void enableOutputAttributes(MeshModel &mm, const es::SharpenOptions &opt) {
   if (opt.colorize) mm.updateDataMask(MeshModel::MM_FACECOLOR | MeshModel::MM_VERTCOLOR);
+}
+
+/// A refused mesh does not keep the colour layers enabled for the run.
+void restoreOutputAttributes(MeshModel &mm, const MeshState &before) {
+  if (!before.hadFaceColor) mm.clearDataMask(MeshModel::MM_FACECOLOR);
+  if (!before.hadVertColor) mm.clearDataMask(MeshModel::MM_VERTCOLOR);
 }
 
 std::vector<std::string> lines(const std::string &text) {
@@ -232,21 +263,35 @@ bool FilterEdgeSharpenerPlugin::applyFilter(QAction *action, MeshDocument &md,
   es::SharpenOptions opt = readOptions(f, par);
   opt.progress = cb;  // the core reports (percent, stage) straight to MeshLab
 
+  // One input check, the core's own (it throws InputError before changing
+  // anything); colour layers are enabled first and dropped again on refusal.
+  const MeshState before(mm);
   prepareTopology(mm);
-  const std::string problem = es::findInputProblem(mm.cm);
-  if (!problem.empty()) return refuse("Edge-Sharpener cannot process this mesh: " + problem);
   enableOutputAttributes(mm, opt);
-
   es::SharpenReport report;
+  std::string failure;
   try {
     report = f.run(mm.cm, opt);
-  } catch (const es::InputError &e) {  // bad parameter values; thrown before any change
-    return refuse(std::string("Edge-Sharpener cannot run: ") + e.what());
+  } catch (const es::InputError &e) {  // bad mesh or parameter values; thrown before any change
+    const std::string problem = es::findInputProblem(mm.cm);
+    failure = problem.empty() ? std::string("Edge-Sharpener cannot run: ") + e.what()
+                              : "Edge-Sharpener cannot process this mesh: " + problem;
   } catch (const std::exception &e) {
-    return refuse(std::string("Edge-Sharpener failed: ") + e.what());
+    failure = std::string("Edge-Sharpener failed: ") + e.what();
   }
+  if (!failure.empty()) {
+    restoreOutputAttributes(mm, before);
+    restoreTopologyState(mm, before);
+    return refuse(failure);
+  }
+  restoreTopologyState(mm, before);
 
-  mm.UpdateBoxAndNormals();
+  if (report.geometryChanged) {
+    // MeshModel::UpdateBoxAndNormals() minus the face normals, which the core
+    // has just computed the same way (UpdateNormal::PerFaceNormalized).
+    vcg::tri::UpdateBounding<CMeshO>::Box(mm.cm);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexAngleWeighted(mm.cm);
+  }
   mm.cm.svn = int(vcg::tri::UpdateSelection<CMeshO>::VertexCount(mm.cm));
   mm.cm.sfn = int(vcg::tri::UpdateSelection<CMeshO>::FaceCount(mm.cm));
 

@@ -149,6 +149,9 @@ TEST_P(DeterminismTest, SharpenIsIdenticalForAnyThreadCount) {
       EXPECT_EQ(one.report.outputVertices, other.report.outputVertices);
       EXPECT_EQ(one.report.outputFaces, other.report.outputFaces);
       EXPECT_EQ(one.report.placement.maxDisplacement, other.report.placement.maxDisplacement);
+      EXPECT_EQ(one.report.intersections.intersectingPairs,
+                other.report.intersections.intersectingPairs);
+      EXPECT_EQ(one.report.intersections.reverted, other.report.intersections.reverted);
     }
   }
 }
@@ -191,6 +194,21 @@ TEST_P(DeterminismTest, LocalAdjacencyUpdateAfterSubdivisionEqualsFullRebuild) {
   const std::vector<std::size_t> local = adjacency(m);
   vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m);
   EXPECT_EQ(local, adjacency(m));
+}
+
+// The MeshLab plugin leaves the mesh's FF adjacency as sharpen() left it
+// (no vcglib rebuild): it must be the adjacency vcglib builds, for both methods.
+TEST_P(DeterminismTest, FaceFaceAfterSharpenEqualsVcglibRebuild) {
+  for (const es::Method method : {es::Method::Paper, es::Method::Extended}) {
+    es::Mesh m;
+    copyMesh(m, inputMesh(GetParam().shape, GetParam().faces));
+    es::SharpenOptions opt;
+    opt.method = method;
+    es::sharpen(m, opt);
+    const std::vector<std::size_t> kept = adjacency(m);
+    vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m);
+    EXPECT_EQ(kept, adjacency(m)) << "method " << int(method);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, DeterminismTest,

@@ -201,3 +201,22 @@ TEST(MeshesDistance, LeavesPositionsUntouched) {
 }
 
 }  // namespace
+
+// Found by the quality benchmark: MeshLab's isotropic remeshing can collapse a
+// shape to coincident vertices, and vcglib's area-proportional sampling never
+// ends on a mesh without area. Refused, on either side.
+TEST(MeshesDistance, MeshWithoutAreaIsRefused) {
+  MeshD collapsed, square;
+  tiltedSquare(square, 0.0, 0.0);
+  collapsed.Clear();
+  auto v = vcg::tri::Allocator<MeshD>::AddVertices(collapsed, 4);
+  for (int i = 0; i < 4; ++i) v[i].P() = Point3d(0.5, 0.5, 0.25);
+  auto& cv = collapsed.vert;
+  vcg::tri::Allocator<MeshD>::AddFace(collapsed, &cv[2], &cv[1], &cv[0]);
+  vcg::tri::Allocator<MeshD>::AddFace(collapsed, &cv[2], &cv[3], &cv[1]);
+  vcg::tri::Allocator<MeshD>::AddFace(collapsed, &cv[3], &cv[2], &cv[0]);
+  vcg::tri::Allocator<MeshD>::AddFace(collapsed, &cv[1], &cv[3], &cv[0]);
+  EXPECT_THROW(measureDistance(collapsed, square), std::invalid_argument);
+  EXPECT_THROW(measureDistance(square, collapsed), std::invalid_argument);
+  EXPECT_NO_THROW(measureDistance(square, square));
+}

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
 
 namespace edge_sharpener {
 
@@ -115,12 +116,27 @@ OneSidedDistance sampleDistance(M& sampled, M& target, double searchRadius,
 
 }  // namespace detail
 
+/// Twice the total area of the mesh's live faces.
+template <class M>
+double doubleSurfaceArea(const M& m) {
+  double sum = 0;
+  for (const auto& f : m.face)
+    if (!f.IsD()) sum += vcg::DoubleArea(f);
+  return sum;
+}
+
 /// Two-sided distance between `a` and `reference`. Positions are not modified; bounding
 /// boxes and face normals of both meshes are updated. Requires per-face marks.
+/// \throw std::invalid_argument when either mesh has no surface (no face of non-zero
+///        area): vcglib's area-proportional sampling never ends on one.
 template <class M>
 DistanceReport measureDistance(M& a, M& reference, const DistanceOptions& options = {}) {
   vcg::tri::RequirePerFaceMark(a);
   vcg::tri::RequirePerFaceMark(reference);
+  for (const M* m : {&a, &reference})
+    if (!(doubleSurfaceArea(*m) > 0))
+      throw std::invalid_argument(
+          "mesh has zero surface area (every face is degenerate): no distance to measure");
   vcg::tri::UpdateBounding<M>::Box(a);
   vcg::tri::UpdateBounding<M>::Box(reference);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "fast_topology.h"
@@ -13,89 +14,120 @@
 
 namespace edge_sharpener {
 
-/// Unit normal of every face in double precision; zero-area faces get a zero
-/// normal (their edges can then never be smooth). Runs in parallel.
+/// Unit normal of every face in double precision, stored in labels.normal
+/// until labelSmoothEdges() has read them (later readers evaluate them on
+/// demand, the same bits); zero-area faces get a zero normal (their edges can
+/// then never be smooth). Runs in parallel.
 /// \return the number of zero-area faces.
 template <class MeshType>
-std::size_t computeFaceNormals(MeshType &m, MeshLabels<MeshType> &labels) {
-  std::int64_t degenerate = 0;
-  const std::int64_t nf = std::int64_t(m.face.size());
-#pragma omp parallel for schedule(static, 4096) reduction(+ : degenerate) if (nf > kParallelMin)
-  for (std::int64_t fi = 0; fi < nf; ++fi) {
-    auto &f = m.face[fi];
-    if (f.IsD()) continue;
-    const Vec3 p0 = positionOf(f.cV(0)), p1 = positionOf(f.cV(1)), p2 = positionOf(f.cV(2));
-    const Vec3 n = (p1 - p0) ^ (p2 - p0);
-    const double scale = std::max({(p1 - p0).SquaredNorm(), (p2 - p1).SquaredNorm(),
-                                   (p0 - p2).SquaredNorm()});
-    const double len = n.Norm();
-    // A relative test: |n| / longest^2 is about the sine of the smallest angle.
-    if (!(len > 1e-12 * scale) || !std::isfinite(len)) {
-      labels.normal[&f] = Vec3(0, 0, 0);
-      ++degenerate;
-    } else {
-      labels.normal[&f] = n / len;
-    }
-  }
-  return std::size_t(degenerate);
+std::size_t computeFaceNormals(MeshType &, MeshLabels<MeshType> &labels) {
+  return labels.normal.fill();
 }
+
+namespace detail {
+
+/// The normal angle of edge i of face f (f the owner of that edge), or
+/// `degenerate` when a face of it has zero area.
+template <class MeshType>
+double edgeNormalAngle(const MeshLabels<MeshType> &labels, const typename MeshType::FaceType *f,
+                       int i, double degenerate) {
+  const Vec3 na = labels.normal[f], nb = labels.normal[f->cFFp(i)];
+  return na.SquaredNorm() == 0 || nb.SquaredNorm() == 0 ? degenerate : angleBetween(na, nb);
+}
+
+}  // namespace detail
 
 /// Labels Smooth every interior edge whose normal angle is below
 /// `multiplier` x the mesh-wide mean of that angle (paper: "twice the
 /// average"). Boundary edges and edges next to zero-area faces are never
 /// smooth and do not enter the mean. Exactly coplanar faces always are.
-/// Each edge's angle is computed once, in parallel; the mean is summed
-/// serially in edge order (forEachEdge), so it does not depend on the
-/// thread count.
-/// \pre FF topology up to date; computeFaceNormals() ran.
+/// Each edge's angle is computed once, in parallel, block by block; the mean
+/// is summed serially in edge order (forEachEdge), so it does not depend on
+/// the thread count. The angles are kept in single precision for the
+/// threshold test: an angle whose float is too close to the threshold to
+/// decide (or is zero) is recomputed in double, so every decision is the
+/// one the double angle gives. Releases the stored face normals
+/// (computeFaceNormals()) once the angles are known.
+/// \pre FF topology up to date.
 template <class MeshType>
 SmoothEdgeStats labelSmoothEdges(MeshType &m, MeshLabels<MeshType> &labels, double multiplier) {
   constexpr double kBoundary = -2.0, kDegenerate = -1.0, kNotOwner = -3.0;
   const std::int64_t nf = std::int64_t(m.face.size());
   // angle[3f + i]: angle of edge i of face f when f visits it in forEachEdge
   // (boundary, or the lower face address of the two), else kNotOwner.
-  std::vector<double> angle(3 * m.face.size(), kNotOwner);
-#pragma omp parallel for schedule(static, 4096) if (nf > kParallelMin)
-  for (std::int64_t fi = 0; fi < nf; ++fi) {
-    auto *f = &m.face[fi];
-    if (f->IsD()) continue;
-    for (int i = 0; i < 3; ++i) {
-      auto *g = f->FFp(i);
-      double &a = angle[3 * fi + i];
-      if (g == f) {
-        a = kBoundary;
-      } else if (f < g) {
-        const Vec3 &na = labels.normal[f];
-        const Vec3 &nb = labels.normal[g];
-        a = na.SquaredNorm() == 0 || nb.SquaredNorm() == 0 ? kDegenerate : angleBetween(na, nb);
-      }
-    }
-  }
+  // Every entry is written by the first pass (no serial initialisation).
+  const std::unique_ptr<float[]> angle(new float[3 * m.face.size()]);
   SmoothEdgeStats s;
   double angleSum = 0;
   std::size_t angleCount = 0;
-  for (const double a : angle) {
-    if (a == kNotOwner) continue;
-    ++s.edges;
-    if (a == kBoundary) {
-      ++s.boundaryEdges;
-    } else if (a == kDegenerate) {
-      ++s.degenerateEdges;
-    } else {
-      angleSum += a;
-      ++angleCount;
+  constexpr std::int64_t kBlock = std::int64_t(1) << 17;  // faces per block
+  std::vector<double> block(3 * std::size_t(std::min(nf, kBlock)));
+  const Vec3 *stored = labels.normal.stored();  // null: evaluated on demand
+  const auto *f0 = m.face.data();
+  const auto normalOf = [&](const typename MeshType::FaceType *f) {
+    return stored ? stored[f - f0] : faceUnitNormal(*f);
+  };
+  for (std::int64_t b0 = 0; b0 < nf; b0 += kBlock) {
+    const std::int64_t b1 = std::min(nf, b0 + kBlock);
+#pragma omp parallel for schedule(static, 4096) if (nf > kParallelMin)
+    for (std::int64_t fi = b0; fi < b1; ++fi) {
+      const auto *f = &m.face[fi];
+      for (int i = 0; i < 3; ++i) {
+        double a = kNotOwner;
+        if (!f->IsD()) {
+          const auto *g = f->cFFp(i);
+          if (g == f) {
+            a = kBoundary;
+          } else if (f < g) {
+            const Vec3 na = normalOf(f), nb = normalOf(g);
+            a = na.SquaredNorm() == 0 || nb.SquaredNorm() == 0 ? kDegenerate : angleBetween(na, nb);
+          }
+        }
+        block[3 * (fi - b0) + i] = a;
+        angle[3 * fi + i] = float(a);  // the sentinels are exact in float
+      }
+    }
+    const double *end = block.data() + 3 * (b1 - b0);
+    for (const double *p = block.data(); p < end; ++p) {
+      const double a = *p;
+      if (a == kNotOwner) continue;
+      ++s.edges;
+      if (a == kBoundary) {
+        ++s.boundaryEdges;
+      } else if (a == kDegenerate) {
+        ++s.degenerateEdges;
+      } else {
+        angleSum += a;
+        ++angleCount;
+      }
     }
   }
+  std::vector<double>().swap(block);
+  labels.normal.release();
   s.meanAngleRad = angleCount ? angleSum / double(angleCount) : 0.0;
   s.thresholdRad = multiplier * s.meanAngleRad;
   std::int64_t smooth = 0;
   const double threshold = s.thresholdRad;
+  // A float is within 2^-24 (relative) of its double: beyond 1e-6 of the
+  // threshold, the float and the double fall on the same side of it.
+  const double undecided = 1e-6 * threshold;
+  // A positive double whose float is zero is below this (flat faces give 0).
+  constexpr double kFloatZeroBound = 1e-45;
 #pragma omp parallel for schedule(static, 4096) reduction(+ : smooth) if (nf > kParallelMin)
   for (std::int64_t fi = 0; fi < nf; ++fi) {
     for (int i = 0; i < 3; ++i) {
-      const double a = angle[3 * fi + i];
-      if (a < 0) continue;  // not visited here, boundary or degenerate
-      if (a < threshold || a == 0.0) {
+      const double af = angle[3 * fi + i];
+      if (af < 0) continue;  // not visited here, boundary or degenerate
+      bool isSmooth;
+      if (af == 0 && threshold >= kFloatZeroBound) {
+        isSmooth = true;  // a == 0, or a < kFloatZeroBound <= threshold
+      } else if (af == 0 || std::abs(af - threshold) <= undecided) {
+        const double a = detail::edgeNormalAngle(labels, &m.face[fi], i, kDegenerate);
+        isSmooth = a < threshold || a == 0.0;
+      } else {
+        isSmooth = af < threshold;
+      }
+      if (isSmooth) {
         // Each edge is set by its one visiting face: no two threads write
         // the same label.
         labels.setEdge(&m.face[fi], i, EdgeLabel::Smooth);

@@ -187,9 +187,10 @@ void updateSplitAdjacency(MeshType &m, const SplitPlan &plan,
   next = firstNew;
   for (std::size_t k = 0; k < plan.faces.size(); ++k)
     for (std::size_t c = 1; c < children[k].size(); ++c) parentOf[next++ - firstNew] = k;
-  std::vector<std::size_t> splitIndex;  // face index -> k, for the parents
-  splitIndex.assign(firstNew, 0);
-  for (std::size_t k = 0; k < plan.faces.size(); ++k) splitIndex[plan.faces[k].face] = k;
+  // Face index -> k, for the parents (32 bits: a full-size array).
+  std::vector<std::uint32_t> splitIndex(firstNew, 0);
+  for (std::size_t k = 0; k < plan.faces.size(); ++k)
+    splitIndex[plan.faces[k].face] = std::uint32_t(k);
 
   auto link = [&](std::size_t f, int i, std::size_t g, int j) {
     m.face[f].FFp(i) = &m.face[g];
@@ -287,7 +288,6 @@ SubdivisionStats subdivide(MeshType &m, const SplitPlan &plan, MeshLabels<MeshTy
       if (c != 0) {
         child.ImportData(parent);
         labels.face[&child] = label;
-        labels.normal[&child] = labels.normal[&parent];
       }
       for (int j = 0; j < 3; ++j) child.V(j) = &m.vert[children[k][c][j]];
     }
