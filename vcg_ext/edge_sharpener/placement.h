@@ -85,6 +85,72 @@ SupportPlanes paperSupportPlanes(MeshType &m, MeshLabels<MeshType> &labels) {
   return support;
 }
 
+namespace detail {
+
+/// Pairs of flanks that meet at an inserted vertex: AB on an edge, AB BC CA
+/// at a corner (pair i is planes i and (i + 1) % originalCount).
+inline int flankPairCount(const InsertedVertexSource &src) {
+  return src.originalCount == 2 ? 1 : 3;
+}
+
+/// Whether a flank's region, curving across the feature as measured where
+/// its plane was fitted (a blend, a coarse cylinder's facets), leaves that
+/// plane before reaching `target` by more than opt.maxBendFraction x the
+/// vertex's displacement (geometry.h: extrapolationBend).
+inline bool flankBendsAway(const InsertedVertexSource &src, const Plane *planes,
+                           const SupportPlanes &support, const SharpenOptions &opt,
+                           const Vec3 &target) {
+  const double allowed = opt.maxBendFraction * (target - src.rest).Norm();
+  // An edge vertex: the bend is measured across the edge only.
+  const Vec3 edge = src.originalCount == 2 ? planes[0].normal ^ planes[1].normal : Vec3(0, 0, 0);
+  const double edgeLength = edge.Norm();
+  for (int i = 0; i < src.originalCount; ++i) {
+    const std::size_t v = src.original[i];
+    // Below this spread the regression mostly sees marching-cubes noise.
+    if (support.spreadRad[v] < opt.minBendSpreadRad) continue;
+    Vec3 w = target - planes[i].point;
+    w -= planes[i].normal * (planes[i].normal * w);
+    if (edgeLength > 0) w -= edge * ((edge * w) / (edgeLength * edgeLength));
+    const double d = w.Norm();
+    if (d > 0 &&
+        extrapolationBend(support.normalScatter[v], support.pointScatter[v], w / d, d) > allowed)
+      return true;
+  }
+  return false;
+}
+
+/// Whether `target` passes, by more than opt.intermediatePlaneTolerance x the
+/// vertex's displacement, through the plane of a region found near the
+/// sources whose normal lies between two flanks' (a facet of a coarse curve,
+/// a strip of a blend): the planes' line or corner would cut through it.
+inline bool passesIntermediateRegion(const InsertedVertexSource &src, const Plane *planes,
+                                     const SupportPlanes &support, const SharpenOptions &opt,
+                                     const Vec3 &target) {
+  const double allowed = opt.intermediatePlaneTolerance * (target - src.rest).Norm();
+  const int n = src.originalCount;
+  Vec3 normalSum(0, 0, 0);
+  for (int i = 0; i < n; ++i) normalSum += planes[i].normal;
+  const auto isFlank = [&](int region) {
+    for (int i = 0; i < n; ++i)
+      if (support.region[src.original[i]] == region) return true;
+    return false;
+  };
+  for (int i = 0; i < n; ++i)
+    for (std::uint32_t u : support.nearby[src.original[i]]) {
+      if (u == SupportPlanes::kNoVertex) break;
+      if (isFlank(support.region[u])) continue;
+      const Plane &l = support.plane[u];
+      bool between = false;
+      for (int a = 0; a < flankPairCount(src); ++a)
+        between |= normalBetween(planes[a].normal, planes[(a + 1) % n].normal, l.normal,
+                                 opt.intermediateSlackRad);
+      if (between && passageBeyondPlane(normalSum, l, src.rest, target) > allowed) return true;
+    }
+  return false;
+}
+
+}  // namespace detail
+
 /// Where the planes put one inserted vertex, before the edge-length check.
 /// \return the outcome and, for Placement::Moved, the target in `target`.
 inline Placement proposePlacement(const InsertedVertexSource &src, const SupportPlanes &support,
@@ -94,10 +160,10 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
     planes[i] = support.plane[src.original[i]];
     if (planes[i].normal.SquaredNorm() == 0) return Placement::NoSupportPlane;
   }
+  const int pairs = detail::flankPairCount(src);
   if (!support.spreadRad.empty() && opt.maxSupportSpreadRatio > 0) {
     // A region that turns as much near the feature as the feature itself is
     // a blend or a facetted curve, not the flank of a sharp edge.
-    const int pairs = src.originalCount == 2 ? 1 : 3;
     for (int i = 0; i < pairs; ++i) {
       const int j = (i + 1) % src.originalCount;
       const double theta = angleBetween(planes[i].normal, planes[j].normal);
@@ -108,7 +174,6 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
   }
   if (opt.convexityCheck) {
     const double flat = std::sin(opt.parallelAngleRad);
-    const int pairs = src.originalCount == 2 ? 1 : 3;  // AB, or AB BC CA
     for (int i = 0; i < pairs; ++i) {
       const int j = (i + 1) % src.originalCount;
       if (classifyChamferEdge(planes[i], planes[j], flat) == EdgeConvexity::Mixed)
@@ -124,55 +189,13 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
     if (!x) return Placement::CoplanarNormals;
     target = *x;
   }
-  if (!support.normalScatter.empty() && opt.maxBendFraction >= 0) {
-    // A region curving across the feature (a blend, a coarse cylinder's
-    // facets) leaves its tangent plane before the planes meet.
-    const double allowed = opt.maxBendFraction * (target - src.rest).Norm();
-    for (int i = 0; i < src.originalCount; ++i) {
-      const std::size_t v = src.original[i];
-      Vec3 w = target - planes[i].point;
-      w -= planes[i].normal * (planes[i].normal * w);
-      if (src.originalCount == 2) {  // across the edge only
-        Vec3 edge = planes[0].normal ^ planes[1].normal;
-        const double len = edge.Norm();
-        if (len > 0) w -= edge * ((edge * w) / (len * len));
-      }
-      const double d = w.Norm();
-      if (!(d > 0)) continue;
-      // Below this spread the regression mostly sees marching-cubes noise.
-      if (support.spreadRad[v] < opt.minBendSpreadRad) continue;
-      if (extrapolationBend(support.normalScatter[v], support.pointScatter[v], w / d, d) > allowed)
-        return Placement::CurvedSupport;
-    }
-  }
-  if (!support.nearby.empty() && opt.intermediatePlaneTolerance >= 0) {
-    // Another region whose plane turns between two flanks stands between
-    // them (a facet of a coarse curve, a strip of a blend): the planes' line
-    // or corner would cut through it.
-    const double allowed = opt.intermediatePlaneTolerance * (target - src.rest).Norm();
-    const int n = src.originalCount;
-    Vec3 normalSum(0, 0, 0);
-    for (int i = 0; i < n; ++i) normalSum += planes[i].normal;
-    const auto isFlank = [&](int region) {
-      for (int i = 0; i < n; ++i)
-        if (support.region[src.original[i]] == region) return true;
-      return false;
-    };
-    for (int i = 0; i < n; ++i)
-      for (std::uint32_t u : support.nearby[src.original[i]]) {
-        if (u == SupportPlanes::kNoVertex) break;
-        if (isFlank(support.region[u])) continue;
-        const Plane &l = support.plane[u];
-        bool between = false;
-        for (int a = 0; a < (n == 2 ? 1 : 3); ++a)
-          between |= normalBetween(planes[a].normal, planes[(a + 1) % n].normal, l.normal,
-                                   opt.intermediateSlackRad);
-        if (between && passageBeyondPlane(normalSum, l, src.rest, target) > allowed)
-          return Placement::CurvedSupport;
-      }
-  }
+  if (!support.normalScatter.empty() && opt.maxBendFraction >= 0 &&
+      detail::flankBendsAway(src, planes, support, opt, target))
+    return Placement::CurvedSupport;
+  if (!support.nearby.empty() && opt.intermediatePlaneTolerance >= 0 &&
+      detail::passesIntermediateRegion(src, planes, support, opt, target))
+    return Placement::CurvedSupport;
   if (opt.method == Method::Extended && opt.apexHeightFactor > 0) {
-    const int pairs = src.originalCount == 2 ? 1 : 3;
     for (int i = 0; i < pairs; ++i)
       if (chamferApexHeightRatio(planes[i], planes[(i + 1) % src.originalCount], target) >
           opt.apexHeightFactor)
