@@ -59,17 +59,15 @@ int run(const CliOptions &cli) {
   es::Mesh m;
   if (!cli.detectOnly) es::io::reserveForSharpening(cli.input, m);  // see capacity_hint.h
   es::io::loadMesh(cli.input, m);
-  // With --reference, keep the input to measure both sides against the exact shape.
-  // The input's distance is measured first: a mesh it cannot be measured on
-  // is refused before any output is written.
+  // With --reference, the input's distance is measured before sharpening (no
+  // copy kept: measuring changes no position), so a mesh it cannot be
+  // measured on is refused before any output is written.
   es::Mesh reference;
   std::optional<es::DistanceReport> before, after;
   if (!cli.reference.empty()) {
     es::io::loadMesh(cli.reference, reference);
     if (reference.FN() == 0) throw std::runtime_error(cli.reference + ": reference has no faces");
-    es::Mesh original;
-    vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(original, m);
-    before = es::measureDistance(original, reference);
+    before = es::measureDistance(m, reference);
   }
 
   es::SharpenOptions opt = cli.extended;  // carries the extended method's tuning flags
