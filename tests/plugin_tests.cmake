@@ -11,27 +11,16 @@ if(TARGET meshlab_common)  # defined by filter_edge_sharpener/ when MeshLab is i
   set(_es_menu_tool "$<TARGET_FILE:list_filter_menu>")
 endif()
 
-# Empty when filter_edge_sharpener/ was not built (no MeshLab): the scripts then skip
-# if MeshLab is really absent, and fail otherwise.
-get_property(_es_meshlab_prefix GLOBAL PROPERTY EDGE_SHARPENER_MESHLAB_PREFIX)
-if(NOT _es_meshlab_prefix)
-  set(_es_meshlab_prefix "${CMAKE_BINARY_DIR}/meshlab-prefix")
-endif()
 set(_es_cli "")
 if(TARGET edge-sharpener)
   set(_es_cli "$<TARGET_FILE:edge-sharpener>")
 endif()
 
-# edge_sharpener_plugin_test(NAME SCRIPT TIMEOUT_SECONDS)
+# edge_sharpener_plugin_test(NAME SCRIPT TIMEOUT_SECONDS). Without filter_edge_sharpener/
+# (no MeshLab) the scripts skip if MeshLab is really absent, and fail otherwise.
 function(edge_sharpener_plugin_test name script timeout)
-  add_test(NAME plugin.${name} COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/plugin/${script}")
-  set_tests_properties(plugin.${name} PROPERTIES
-    SKIP_RETURN_CODE 77
-    TIMEOUT ${timeout}
-    LABELS "plugin"
-    # xvfb-run -a races for display numbers, and 2 cores are not enough for two MeshLabs.
-    RESOURCE_LOCK meshlab_xvfb
-    ENVIRONMENT "ES_MESHLAB_PREFIX=${_es_meshlab_prefix};ES_TEST_TOOL=$<TARGET_FILE:plugin_test_tool>;ES_CLI=${_es_cli};ES_MENU_TOOL=${_es_menu_tool};ES_SOURCE_DIR=${PROJECT_SOURCE_DIR};ES_WORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/plugin/${name}")
+  edge_sharpener_meshlab_script_test(plugin ${name} ${script} ${timeout}
+    "ES_TEST_TOOL=$<TARGET_FILE:plugin_test_tool>;ES_CLI=${_es_cli};ES_MENU_TOOL=${_es_menu_tool}")
 endfunction()
 
 edge_sharpener_plugin_test(listing listing.sh 120)
