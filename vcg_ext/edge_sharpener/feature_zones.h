@@ -165,6 +165,55 @@ std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, Fea
   return opened;
 }
 
+/// Returns to the zone every region face around a vertex of an internal
+/// crease: a non-smooth edge whose two faces grew into the same region. A
+/// region leaks around the end of a feature whose angle fades out (fandisk's
+/// blends), so both flanks of the sharp part carry one id; opening the crease
+/// gives that part a zone, which labelZoneVertices() splits by plane.
+/// \pre segmentRegions() ran. \return the number of faces returned.
+template <class MeshType>
+std::size_t openInternalCreases(const MeshType &m, MeshLabels<MeshType> &labels,
+                                const VertexFaceTable &vf, double minAngleRad,
+                                FeatureZones &zones) {
+  std::vector<char> crease(m.vert.size(), 0);
+  for (const auto &f : m.face) {
+    if (f.IsD()) continue;
+    const int r = zones.faceRegion[vcg::tri::Index(m, &f)];
+    if (r == kZone) continue;
+    for (int i = 0; i < 3; ++i) {
+      const auto *g = f.cFFp(i);
+      if (g == &f || labels.edge[&f][i] == EdgeLabel::Smooth) continue;
+      if (zones.faceRegion[vcg::tri::Index(m, g)] != r) continue;
+      if (angleBetween(labels.normal[&f], labels.normal[g]) <= minAngleRad) continue;
+      crease[vcg::tri::Index(m, f.cV(i))] = 1;
+      crease[vcg::tri::Index(m, f.cV((i + 1) % 3))] = 1;
+    }
+  }
+  std::size_t opened = 0;
+  for (std::size_t v = 0; v < m.vert.size(); ++v) {
+    if (!crease[v]) continue;
+    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
+      if (zones.faceRegion[*fi] != kZone) {
+        zones.faceRegion[*fi] = kZone;
+        ++opened;
+      }
+  }
+  return opened;
+}
+
+/// Whether two labelled vertices sit on different surfaces: different
+/// regions, or one region whose planes there turn by more than
+/// `featureAngleRad` (a region that leaked around a fading feature).
+inline bool differentSurfaces(const FeatureZones &zones, std::size_t a, std::size_t b,
+                              double featureAngleRad) {
+  const int la = zones.vertexLabel[a], lb = zones.vertexLabel[b];
+  if (la < 0 || lb < 0) return false;
+  if (la != lb) return true;
+  if (!(featureAngleRad > 0)) return false;
+  const Vec3 &na = zones.support.plane[a].normal, &nb = zones.support.plane[b].normal;
+  return na.SquaredNorm() > 0 && nb.SquaredNorm() > 0 && angleBetween(na, nb) > featureAngleRad;
+}
+
 /// A region's plane near one vertex, and how the region departs from it.
 struct RegionPlaneFit {
   Plane plane{Vec3(0, 0, 0), Vec3(0, 0, 0)};
@@ -356,8 +405,14 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
       std::uint8_t &n = candCount[u];
       if (n == kMaxCandidates) return;
       if (n > 0 && c.hops + 1 > list[0].hops + opt.labelSlackHops) return;
+      // One candidate per surface: a region that leaked around a fading
+      // feature offers one per plane direction.
       for (std::uint8_t i = 0; i < n; ++i)
-        if (list[i].region == c.region) return;
+        if (list[i].region == c.region &&
+            !(opt.sameRegionFeatureAngleRad > 0 &&
+              angleBetween(zones.support.plane[list[i].anchor].normal,
+                           zones.support.plane[c.anchor].normal) > opt.sameRegionFeatureAngleRad))
+          return;
       list[n++] = Candidate{c.region, c.anchor, c.hops + 1};
       queue.push_back({std::uint32_t(u), list[n - 1]});
     });
@@ -390,7 +445,8 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
 /// mesh border) whose endpoints carry different region labels is a chamfer
 /// edge; faces with three such edges are corners.
 template <class MeshType>
-FilterStats markZoneChamfers(MeshType &m, MeshLabels<MeshType> &labels, const FeatureZones &zones) {
+FilterStats markZoneChamfers(MeshType &m, MeshLabels<MeshType> &labels, const FeatureZones &zones,
+                             double sameRegionFeatureAngleRad) {
   FilterStats s;
   for (auto &f : m.face) {
     if (f.IsD()) continue;
@@ -406,9 +462,8 @@ FilterStats markZoneChamfers(MeshType &m, MeshLabels<MeshType> &labels, const Fe
   forEachEdge(m, [&](auto *f, int i, bool boundary) {
     if (zones.faceRegion[vcg::tri::Index(m, f)] != kZone) return;
     if (!boundary && zones.faceRegion[vcg::tri::Index(m, f->FFp(i))] != kZone) return;
-    const int a = zones.vertexLabel[vcg::tri::Index(m, f->cV(i))];
-    const int b = zones.vertexLabel[vcg::tri::Index(m, f->cV((i + 1) % 3))];
-    if (a >= 0 && b >= 0 && a != b) {
+    if (differentSurfaces(zones, vcg::tri::Index(m, f->cV(i)),
+                          vcg::tri::Index(m, f->cV((i + 1) % 3)), sameRegionFeatureAngleRad)) {
       labels.setEdge(f, i, EdgeLabel::Chamfer);
       ++s.chamferEdges;
     }

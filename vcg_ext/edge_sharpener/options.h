@@ -51,6 +51,19 @@ struct SharpenOptions {
   /// Return to the zone the region faces around vertices where two regions
   /// touch (feature_zones.h: openRegionContacts).
   bool openRegionContacts = true;
+  /// Return to the zone the region faces around internal creases (a
+  /// non-smooth edge inside one region: feature_zones.h: openInternalCreases).
+  bool openInternalCreases = true;
+  /// ...whose face normals turn by more than this angle (radians): below
+  /// it, a non-smooth edge inside a region is marching-cubes noise.
+  double internalCreaseAngleRad = 20.0 * M_PI / 180.0;
+  /// ...and by more than this multiple of the smooth-edge threshold (a
+  /// coarse sampling of a curved surface has large angles everywhere).
+  double internalCreaseThresholdFactor = 3.0;
+  /// Two vertices of one region whose planes turn by more than this angle
+  /// (radians) lie on different surfaces: a chamfer edge may join them. 0:
+  /// one region is one surface.
+  double sameRegionFeatureAngleRad = 25.0 * M_PI / 180.0;
   /// Face rings around a region's border vertex used to fit its plane.
   int supportRings = 2;
   /// A zone vertex considers the regions reaching it within this many hops

@@ -82,6 +82,7 @@ struct ExtendedStats {
   std::size_t regions = 0;               ///< smooth regions kept
   std::size_t corridors = 0;             ///< thin smooth regions returned to the zone
   std::size_t openedContacts = 0;        ///< region faces returned to the zone at region contacts
+  std::size_t openedCreases = 0;         ///< region faces returned to the zone at internal creases
   std::size_t zoneFaces = 0;             ///< faces outside every region
   std::size_t zoneVertices = 0;          ///< vertices outside every region
   std::size_t labelledZoneVertices = 0;  ///< zone vertices given a region label
@@ -121,9 +122,10 @@ inline std::string formatReport(const SharpenReport &r) {
     << r.filters.chamferFaces << ", corner faces " << r.filters.cornerFaces << "\n";
   if (r.extendedMethod) {
     s << "feature zones: " << r.extended.regions << " smooth regions (" << r.extended.corridors
-      << " corridors dissolved), " << r.extended.zoneFaces << " zone faces, "
-      << r.extended.labelledZoneVertices << " of " << r.extended.zoneVertices
-      << " zone vertices labelled";
+      << " corridors dissolved), " << r.extended.zoneFaces << " zone faces ("
+      << r.extended.openedContacts << " opened at region contacts, " << r.extended.openedCreases
+      << " at internal creases), " << r.extended.labelledZoneVertices << " of "
+      << r.extended.zoneVertices << " zone vertices labelled";
     if (r.geometryChanged)
       s << ", " << r.extended.projectedVertices << " projected onto their region (max "
         << r.extended.maxProjection << ", " << r.extended.projectionsRejected << " refused)";

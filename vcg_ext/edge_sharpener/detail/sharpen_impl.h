@@ -58,8 +58,15 @@ void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
     report.extended.openedContacts = openRegionContacts(m, vf, zones);
     report.extended.zoneFaces += report.extended.openedContacts;
   }
+  if (opt.openInternalCreases) {
+    // A coarse sampling of a curved surface has large angles everywhere.
+    const double creaseAngle = std::max(
+        opt.internalCreaseAngleRad, opt.internalCreaseThresholdFactor * report.smooth.thresholdRad);
+    report.extended.openedCreases = openInternalCreases(m, labels, vf, creaseAngle, zones);
+    report.extended.zoneFaces += report.extended.openedCreases;
+  }
   labelZoneVertices(m, vf, opt, zones, report.extended);
-  report.filters = markZoneChamfers(m, labels, zones);
+  report.filters = markZoneChamfers(m, labels, zones, opt.sameRegionFeatureAngleRad);
 }
 
 template <class MeshType>
