@@ -10,8 +10,8 @@
   MeshLab UMR 1%: measured max x1.14 / RMS x1.82 over lblock, lblock_tilted, wedge,
   pyramid, cross_prism; x1.64 / x2.42 when MeshLab also resamples the cube (it comes out
   exact: factors are capped at x10); project MC 1%: measured max x1.22 / RMS x1.56.
-- The extended method is only required not to be worse (it is being improved); its
-  factors are printed.
+- The extended method's reduction factors likewise: MeshLab UMR 1%: measured max x1.91 /
+  RMS x8.45 over the same five shapes; project MC 1%: max x4.72 / RMS x9.71 over seven.
 """
 import json
 import math
@@ -21,7 +21,9 @@ TOL = 0.01          # sampling noise of the max is well below 1%
 FLOOR = 1e-4        # % of the diagonal: measurement noise of float meshes
 UNCHANGED = 1e-3    # % of the diagonal
 CAP = 10.0          # factors are capped in the means (the cube can come out exact)
-PAPER_MIN = {"umr": (1.08, 1.6), "mc": (1.1, 1.3)}  # (max factor, RMS factor)
+# (max factor, RMS factor) at about 80% of the measured geometric means
+MIN_FACTORS = {"paper": {"umr": (1.08, 1.6), "mc": (1.1, 1.3)},
+               "extended": {"umr": (1.5, 6.5), "mc": (3.7, 7.7)}}
 
 
 def gmean(v):
@@ -60,7 +62,7 @@ def main():
                 if ch is None or ch > UNCHANGED:
                     failures.append(f"{tag}: a mesh without chamfers was changed by {ch}% of "
                                     "the diagonal")
-            elif c["input"] in PAPER_MIN:
+            elif c["input"] in MIN_FACTORS["paper"]:
                 factors.setdefault((c["input"], r["method"]), []).append(
                     (min(fmax, CAP), min(frms, CAP)))
     if made.get("umr", 0) < 4:
@@ -70,11 +72,10 @@ def main():
         gm = gmean([x[0] for x in v]), gmean([x[1] for x in v])
         print(f"geometric mean, {kind} 1%, {method}: max x{gm[0]:.2f}, RMS x{gm[1]:.2f} "
               f"over {len(v)} shapes")
-        if method == "paper":
-            need = PAPER_MIN[kind]
-            if gm[0] < need[0] or gm[1] < need[1]:
-                failures.append(f"paper method on {kind} 1%: max x{gm[0]:.2f} / RMS x{gm[1]:.2f}, "
-                                f"expected at least x{need[0]} / x{need[1]}")
+        need = MIN_FACTORS[method][kind]
+        if gm[0] < need[0] or gm[1] < need[1]:
+            failures.append(f"{method} method on {kind} 1%: max x{gm[0]:.2f} / RMS x{gm[1]:.2f}, "
+                            f"expected at least x{need[0]} / x{need[1]}")
     if failures:
         print("FAIL:\n  " + "\n  ".join(failures), file=sys.stderr)
         sys.exit(1)
