@@ -63,7 +63,7 @@ struct SharpenOptions {
   /// Two vertices of one region whose planes turn by more than this angle
   /// (radians) lie on different surfaces: a chamfer edge may join them. 0:
   /// one region is one surface.
-  double sameRegionFeatureAngleRad = 25.0 * M_PI / 180.0;
+  double sameRegionFeatureAngleRad = 45.0 * M_PI / 180.0;
   /// Face rings around a region's border vertex used to fit its plane.
   int supportRings = 2;
   /// A zone vertex considers the regions reaching it within this many hops
