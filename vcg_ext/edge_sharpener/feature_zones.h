@@ -7,8 +7,10 @@
 // triangles wide and whole corner patches whose vertices are not red. Here the
 // smooth part is split into regions (the paper's "global approach": triangles
 // connected through smooth edges), thin corridors are returned to the zone,
-// and each zone vertex takes the label of the nearby region whose local plane
-// it lies closest to. An edge whose endpoints carry different labels crosses
+// so are region contacts and internal creases (a region that leaked around
+// the fading end of a feature), and each zone vertex takes the label of the
+// nearby region whose local plane it lies closest to. An edge whose endpoints
+// carry different labels, or one label with planes 45 degrees apart, crosses
 // a sharp edge; a face with three labels contains a corner. The split and the
 // placement then follow the paper, with planes fitted to each region near
 // the feature instead of one vertex's normal.
