@@ -267,6 +267,11 @@ WORSE_CAUSES = {
         "surface (depth 7) rounds the holes' rims off by 0.9% of the diagonal; the paper method "
         "moves 25 vertices there (at most 1.04 units, 55 kept by the convexity test) and the "
         "farthest rim point of the reference moves from 0.917% to 0.937% away."),
+    "fandisk": (
+        "with CSG 1% (extended), the worst point (0.013, -0.928, -0.349) is where a face 0.05 "
+        "wide (1.7 cells) at x = 0 meets the front face: the plane fitted to the narrow face and "
+        "the front face's plane meet 0.96% of the diagonal from the reference's edge. Same limit "
+        "as plate_holes. IER 1% at multiplier 1.5 is not diagnosed yet."),
     "abc6": (
         "the reference has designed 45-degree conical chamfers (about 1e-4 units tall, 2-3 cells at 0.5%) between "
         "its top and its cylindrical walls. Both fitted planes are exact (top z = 1.5875e-3, wall "
