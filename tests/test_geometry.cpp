@@ -197,3 +197,35 @@ TEST(Bend, UncorrelatedNormalNoiseIsNotCurvature) {
   }
   EXPECT_LT(es::extrapolationBend(turn, extent, Vec3(1, 0, 0), 0.3), 0.002);
 }
+
+TEST(Bend, FitQualityTellsACurveFromStaircaseNoise) {
+  // A cylinder's normals follow position exactly; alternating +-5 degree
+  // tilts on a flat patch do not follow it at all.
+  const double radius = 2.0;
+  es::CrossScatter3 turn, extent, self;
+  const Vec3 normal(0, 0, 1);
+  for (int i = -3; i <= 3; ++i) {
+    const double angle = 0.02 * i;
+    const Vec3 n(std::sin(angle), 0, std::cos(angle));
+    const Vec3 c = n * radius - Vec3(0, 0, radius);
+    turn.add(n - normal, c, 1.0);
+    extent.add(c, c, 1.0);
+    self.add(n - normal, n - normal, 1.0);
+  }
+  EXPECT_GT(es::curveFitQuality(turn, extent, self, Vec3(1, 0, 0)), 0.99);
+
+  es::CrossScatter3 noiseTurn, noiseExtent, noiseSelf;
+  for (int i = -4; i <= 4; ++i) {
+    const double tilt = (i % 2 == 0 ? 1 : -1) * 5 * kDeg;
+    const Vec3 n(std::sin(tilt), 0, std::cos(tilt));
+    const Vec3 c(0.05 * i, 0, 0);
+    noiseTurn.add(n - normal, c, 1.0);
+    noiseExtent.add(c, c, 1.0);
+    noiseSelf.add(n - normal, n - normal, 1.0);
+  }
+  EXPECT_LT(es::curveFitQuality(noiseTurn, noiseExtent, noiseSelf, Vec3(1, 0, 0)), 0.1);
+  // Nothing measured: no quality.
+  EXPECT_EQ(es::curveFitQuality(es::CrossScatter3{}, es::CrossScatter3{}, es::CrossScatter3{},
+                                Vec3(1, 0, 0)),
+            0.0);
+}

@@ -222,6 +222,7 @@ struct RegionPlaneFit {
   double spreadRad = 0;         ///< largest angle between the normal and a fitted face's
   CrossScatter3 normalScatter;  ///< area-weighted (normal - plane normal)(centroid - point)^T
   CrossScatter3 pointScatter;   ///< area-weighted (centroid - point)(centroid - point)^T
+  CrossScatter3 normalSelfScatter;  ///< area-weighted (normal - plane normal)(...)^T
 };
 
 /// The plane of region `r` near vertex v: through the area-weighted centroid,
@@ -289,9 +290,11 @@ RegionPlaneFit fitRegionPlane(const MeshType &m, const VertexFaceTable &vf,
     fit.spreadRad = std::max(fit.spreadRad, angleBetween(fit.plane.normal, f.normal));
     fit.normalScatter.add(f.normal - fit.plane.normal, f.centroid - fit.plane.point, f.area);
     fit.pointScatter.add(f.centroid - fit.plane.point, f.centroid - fit.plane.point, f.area);
+    fit.normalSelfScatter.add(f.normal - fit.plane.normal, f.normal - fit.plane.normal, f.area);
   }
   fit.normalScatter.scale(1.0 / areaSum);
   fit.pointScatter.scale(1.0 / areaSum);
+  fit.normalSelfScatter.scale(1.0 / areaSum);
   return fit;
 }
 
@@ -353,6 +356,7 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
   zones.support.spreadRad.assign(nv, 0.0);
   zones.support.normalScatter.assign(nv, CrossScatter3{});
   zones.support.pointScatter.assign(nv, CrossScatter3{});
+  zones.support.normalSelfScatter.assign(nv, CrossScatter3{});
   std::vector<int> stamp(m.face.size(), -1);
   int stampValue = 0;
   std::vector<char> touchesZone(nv, 0);
@@ -380,6 +384,7 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
       zones.support.spreadRad[v] = fit.spreadRad;
       zones.support.normalScatter[v] = fit.normalScatter;
       zones.support.pointScatter[v] = fit.pointScatter;
+      zones.support.normalSelfScatter[v] = fit.normalSelfScatter;
     }
   }
 
@@ -434,6 +439,7 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
         zones.support.spreadRad[v] = zones.support.spreadRad[cand[v][i].anchor];
         zones.support.normalScatter[v] = zones.support.normalScatter[cand[v][i].anchor];
         zones.support.pointScatter[v] = zones.support.pointScatter[cand[v][i].anchor];
+        zones.support.normalSelfScatter[v] = zones.support.normalSelfScatter[cand[v][i].anchor];
       }
     }
     stats.labelledZoneVertices += zones.vertexLabel[v] >= 0;

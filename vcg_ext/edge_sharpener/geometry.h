@@ -168,6 +168,20 @@ inline double extrapolationBend(const CrossScatter3 &normalPosition,
   return 0.5 * (turn / extent) * distance * distance;
 }
 
+/// How much of the normals' turning along unit direction w the linear model
+/// of extrapolationBend() explains: the squared correlation of the fitted
+/// faces' normal deviation along w with their position along w, in [0, 1]
+/// (near 1: a cleanly sampled curve; near 0: staircase noise). 0 when not
+/// measurable.
+inline double curveFitQuality(const CrossScatter3 &normalPosition,
+                              const CrossScatter3 &positionScatter, const CrossScatter3 &normalSelf,
+                              const Vec3 &w) {
+  const double turn = normalPosition.along(w), extent = positionScatter.along(w),
+               spread = normalSelf.along(w);
+  if (!(extent > 0) || !(spread > 0)) return 0.0;
+  return std::min(1.0, turn * turn / (extent * spread));
+}
+
 /// Smallest interior angle of triangle abc in radians (0 for a degenerate one).
 inline double minTriangleAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
   const double ta = angleBetween(b - a, c - a);

@@ -99,9 +99,13 @@ struct SharpenOptions {
   /// reaching the sharp edge (geometry.h: extrapolationBend). Negative
   /// disables the test.
   double maxBendFraction = 0.6;
-  /// ...tested only where the fitted faces spread by at least this angle
-  /// (radians): below it, marching cubes' staircase dominates the estimate.
+  /// ...tested where the fitted faces spread by at least this angle
+  /// (radians): below it, marching cubes' staircase dominates the estimate...
   double minBendSpreadRad = 5.0 * M_PI / 180.0;
+  /// ...or where the fitted faces' normals follow their position this well
+  /// (geometry.h: curveFitQuality, in [0, 1]): a finely sampled curve (a
+  /// sphere remeshed isotropically) spreads little over the fitted rings.
+  double minBendFitQuality = 0.9;
   /// How far (radians) a third region's normal may lie off the arc between
   /// the flanks' normals and still count as between them.
   double intermediateSlackRad = 10.0 * M_PI / 180.0;

@@ -55,6 +55,8 @@ struct SupportPlanes {
   /// Extended method: scatter of the fitted faces' normals and centroids
   /// about the plane (geometry.h: extrapolationBend); empty otherwise.
   std::vector<CrossScatter3> normalScatter, pointScatter;
+  /// Extended method: scatter of the fitted faces' normal deviations.
+  std::vector<CrossScatter3> normalSelfScatter;
   /// Extended method: the region each vertex's plane belongs to (-1: none)...
   std::vector<int> region;
   /// ...and, for vertices next to the feature zone, vertices holding the
@@ -106,14 +108,18 @@ inline bool flankBendsAway(const InsertedVertexSource &src, const Plane *planes,
   const double edgeLength = edge.Norm();
   for (int i = 0; i < src.originalCount; ++i) {
     const std::size_t v = src.original[i];
-    // Below this spread the regression mostly sees marching-cubes noise.
-    if (support.spreadRad[v] < opt.minBendSpreadRad) continue;
     Vec3 w = target - planes[i].point;
     w -= planes[i].normal * (planes[i].normal * w);
     if (edgeLength > 0) w -= edge * ((edge * w) / (edgeLength * edgeLength));
     const double d = w.Norm();
-    if (d > 0 &&
-        extrapolationBend(support.normalScatter[v], support.pointScatter[v], w / d, d) > allowed)
+    if (!(d > 0)) continue;
+    // Below this spread the regression mostly sees marching-cubes noise,
+    // unless the normals follow position cleanly (a finely sampled curve).
+    if (support.spreadRad[v] < opt.minBendSpreadRad &&
+        curveFitQuality(support.normalScatter[v], support.pointScatter[v],
+                        support.normalSelfScatter[v], w / d) < opt.minBendFitQuality)
+      continue;
+    if (extrapolationBend(support.normalScatter[v], support.pointScatter[v], w / d, d) > allowed)
       return true;
   }
   return false;
