@@ -23,6 +23,10 @@ class ScopedFaceAttribute {
 
   T &operator[](const typename MeshType::FaceType *f) { return h_[f]; }
   T &operator[](std::size_t i) { return h_[i]; }
+  // vcglib's handle has no const access; its storage is reached through a
+  // pointer, so reading it does not change the handle.
+  const T &operator[](const typename MeshType::FaceType *f) const { return (*h_._handle)[f]; }
+  const T &operator[](std::size_t i) const { return (*h_._handle)[i]; }
 
  private:
   MeshType &m_;
@@ -42,6 +46,8 @@ class ScopedVertexAttribute {
 
   T &operator[](const typename MeshType::VertexType *v) { return h_[v]; }
   T &operator[](std::size_t i) { return h_[i]; }
+  const T &operator[](const typename MeshType::VertexType *v) const { return (*h_._handle)[v]; }
+  const T &operator[](std::size_t i) const { return (*h_._handle)[i]; }
 
  private:
   MeshType &m_;

@@ -137,6 +137,22 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
   }
 }
 
+/// Returns to the zone every region face incident to a marked vertex.
+/// \return the number of faces returned.
+inline std::size_t openFacesAround(const VertexFaceTable &vf, const std::vector<char> &marked,
+                                   FeatureZones &zones) {
+  std::size_t opened = 0;
+  for (std::size_t v = 0; v < marked.size(); ++v) {
+    if (!marked[v]) continue;
+    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
+      if (zones.faceRegion[*fi] != kZone) {
+        zones.faceRegion[*fi] = kZone;
+        ++opened;
+      }
+  }
+  return opened;
+}
+
 /// Returns to the zone every region face with a vertex shared by two or more
 /// regions. Where two regions touch directly the chamfer was swallowed by
 /// their growth (its edges passed the smooth test); opening the contact
@@ -154,17 +170,7 @@ std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, Fea
       if (seen != r) contact[v] = 1;
     }
   }
-  std::size_t opened = 0;
-  for (std::size_t f = 0; f < m.face.size(); ++f) {
-    if (zones.faceRegion[f] == kZone || m.face[f].IsD()) continue;
-    for (int k = 0; k < 3; ++k)
-      if (contact[vcg::tri::Index(m, m.face[f].cV(k))]) {
-        zones.faceRegion[f] = kZone;
-        ++opened;
-        break;
-      }
-  }
-  return opened;
+  return openFacesAround(vf, contact, zones);
 }
 
 /// Returns to the zone every region face around a vertex of an internal
@@ -174,7 +180,7 @@ std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, Fea
 /// gives that part a zone, which labelZoneVertices() splits by plane.
 /// \pre segmentRegions() ran. \return the number of faces returned.
 template <class MeshType>
-std::size_t openInternalCreases(const MeshType &m, MeshLabels<MeshType> &labels,
+std::size_t openInternalCreases(const MeshType &m, const MeshLabels<MeshType> &labels,
                                 const VertexFaceTable &vf, double minAngleRad,
                                 FeatureZones &zones) {
   std::vector<char> crease(m.vert.size(), 0);
@@ -191,16 +197,15 @@ std::size_t openInternalCreases(const MeshType &m, MeshLabels<MeshType> &labels,
       crease[vcg::tri::Index(m, f.cV((i + 1) % 3))] = 1;
     }
   }
-  std::size_t opened = 0;
-  for (std::size_t v = 0; v < m.vert.size(); ++v) {
-    if (!crease[v]) continue;
-    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
-      if (zones.faceRegion[*fi] != kZone) {
-        zones.faceRegion[*fi] = kZone;
-        ++opened;
-      }
-  }
-  return opened;
+  return openFacesAround(vf, crease, zones);
+}
+
+/// Whether two planes of one region stand for different surfaces: both are
+/// set and they turn by more than `featureAngleRad` (a region that leaked
+/// around a fading feature). A non-positive angle disables the test.
+inline bool planesTurnApart(const Vec3 &na, const Vec3 &nb, double featureAngleRad) {
+  return featureAngleRad > 0 && na.SquaredNorm() > 0 && nb.SquaredNorm() > 0 &&
+         angleBetween(na, nb) > featureAngleRad;
 }
 
 /// Whether two labelled vertices sit on different surfaces: different
@@ -211,9 +216,8 @@ inline bool differentSurfaces(const FeatureZones &zones, std::size_t a, std::siz
   const int la = zones.vertexLabel[a], lb = zones.vertexLabel[b];
   if (la < 0 || lb < 0) return false;
   if (la != lb) return true;
-  if (!(featureAngleRad > 0)) return false;
-  const Vec3 &na = zones.support.plane[a].normal, &nb = zones.support.plane[b].normal;
-  return na.SquaredNorm() > 0 && nb.SquaredNorm() > 0 && angleBetween(na, nb) > featureAngleRad;
+  return planesTurnApart(zones.support.plane[a].normal, zones.support.plane[b].normal,
+                         featureAngleRad);
 }
 
 /// A region's plane near one vertex, and how the region departs from it.
@@ -416,9 +420,8 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
       // feature offers one per plane direction.
       for (std::uint8_t i = 0; i < n; ++i)
         if (list[i].region == c.region &&
-            !(opt.sameRegionFeatureAngleRad > 0 &&
-              angleBetween(zones.support.plane[list[i].anchor].normal,
-                           zones.support.plane[c.anchor].normal) > opt.sameRegionFeatureAngleRad))
+            !planesTurnApart(zones.support.plane[list[i].anchor].normal,
+                             zones.support.plane[c.anchor].normal, opt.sameRegionFeatureAngleRad))
           return;
       list[n++] = Candidate{c.region, c.anchor, c.hops + 1};
       queue.push_back({std::uint32_t(u), list[n - 1]});
@@ -450,8 +453,10 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
 /// Marks the chamfer edges and faces of the extended method in the paper's
 /// labels, so the paper's split plan and subdivision apply unchanged: region
 /// faces are red; an edge between two zone faces (or a zone face and the
-/// mesh border) whose endpoints carry different region labels is a chamfer
-/// edge; faces with three such edges are corners.
+/// mesh border) whose endpoints sit on different surfaces (differentSurfaces():
+/// different region labels, or one region's planes more than
+/// `sameRegionFeatureAngleRad` apart) is a chamfer edge; faces with three
+/// such edges are corners.
 template <class MeshType>
 FilterStats markZoneChamfers(MeshType &m, MeshLabels<MeshType> &labels, const FeatureZones &zones,
                              double sameRegionFeatureAngleRad) {
