@@ -220,3 +220,39 @@ TEST(MeshesDistance, MeshWithoutAreaIsRefused) {
   EXPECT_THROW(measureDistance(square, collapsed), std::invalid_argument);
   EXPECT_NO_THROW(measureDistance(square, square));
 }
+
+// Found by the quality benchmark (block, Screened Poisson): vcglib's closest-face grid spans
+// the reference alone, and a sample point just inside its far border was rounded into a cell
+// past the grid's end (a crash).
+TEST(MeshesDistance, SamplePointOnTheFarBorderOfTheSearchGrid) {
+  using Coord = Mesh::CoordType;
+  Mesh reference, sampled;
+  auto v = vcg::tri::Allocator<Mesh>::AddVertices(reference, 4);
+  const float xs[4] = {0, 10, 10, 0}, ys[4] = {0, 0, 10, 10};
+  for (int i = 0; i < 4; ++i) v[i].P() = Coord(xs[i], ys[i], 0);
+  auto &rv = reference.vert;
+  vcg::tri::Allocator<Mesh>::AddFace(reference, &rv[0], &rv[1], &rv[2]);
+  vcg::tri::Allocator<Mesh>::AddFace(reference, &rv[0], &rv[2], &rv[3]);
+
+  // The grid vcglib builds on the reference alone, and a point above the square, inside
+  // that grid, which its cell lookup rounds past the grid's top.
+  vcg::GridStaticPtr<Mesh::FaceType, float> grid;
+  grid.Set(reference.face.begin(), reference.face.end());
+  Coord top(5, 5, grid.bbox.max[2]);
+  vcg::Point3i cell(0, 0, 0);
+  for (int step = 0; step < 64 && cell[2] != grid.siz[2]; ++step) {
+    top[2] = std::nextafter(top[2], 0.0f);
+    grid.PToIP(top, cell);
+  }
+  ASSERT_TRUE(grid.bbox.IsInEx(top));
+  ASSERT_EQ(cell[2], grid.siz[2]) << "no float rounds onto the border: the test sees no risk";
+
+  auto s = vcg::tri::Allocator<Mesh>::AddVertices(sampled, 3);
+  s[0].P() = top;
+  s[1].P() = top - Coord(1, 0, 0);
+  s[2].P() = top - Coord(1, 1, 0);
+  vcg::tri::Allocator<Mesh>::AddFace(sampled, &sampled.vert[0], &sampled.vert[1], &sampled.vert[2]);
+  const DistanceReport report = measureDistance(sampled, reference, fastOptions());
+  EXPECT_NEAR(report.forward.max, top[2], 1e-4);
+  EXPECT_NEAR(report.forward.min, top[2], 1e-4);
+}

@@ -89,6 +89,13 @@ OneSidedDistance sampleDistance(M& sampled, M& target, double searchRadius,
   using Sampling = vcg::tri::SurfaceSampling<M, Sink>;
 
   vcg::tri::HausdorffSampler<M> sampler(&target);
+  // vcglib's grid spans only the target, and a query point just inside its far border can be
+  // rounded into a cell past the end (a crash). Spanning both meshes with a margin keeps every
+  // sample well inside.
+  vcg::Box3<typename M::ScalarType> span = target.bbox;
+  span.Add(sampled.bbox);
+  span.Offset(span.Diag() * typename M::ScalarType(0.05) + typename M::ScalarType(1e-6));
+  sampler.unifGridFace.Set(target.face.begin(), target.face.end(), span);
   // Samples at this distance or farther are dropped, and the member starts uninitialised.
   sampler.dist_upper_bound = static_cast<typename M::ScalarType>(searchRadius);
   Sink sink(sampler);
