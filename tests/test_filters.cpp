@@ -273,3 +273,56 @@ TEST(Extended, RidgeFadingIntoOneRegionIsStillSharpened) {
   // fits are not exact, and the border row keeps its chamfer).
   EXPECT_LT(errorAtRidge(0.3), 0.6 * before);
 }
+
+// A corner where a flat face meets two pieces of one coarse cylinder: toward
+// the three-plane corner the curved flank's faces spread along the cylinder's
+// axis, so its bend there is diluted, but along its edge with the flat face
+// the flank curves away. The pair test catches what the corner test misses.
+TEST(Fallbacks, CornerPairBendsAwayWhereTheCornerDoesNot) {
+  using es::CrossScatter3;
+  using es::Plane;
+  using es::Vec3;
+  // Solid x, y, z <= 0: top A (z = 0), side B (x = 0), front C (y = 0).
+  es::SupportPlanes support;
+  support.plane = {Plane{Vec3(-0.3, -0.3, 0), Vec3(0, 0, 1)},
+                   Plane{Vec3(0, -0.5, -0.2), Vec3(1, 0, 0)},
+                   Plane{Vec3(-0.3, 0, -0.3), Vec3(0, 1, 0)}};
+  support.spreadRad = {0.0, 10 * M_PI / 180, 0.0};
+  support.normalScatter.assign(3, CrossScatter3{});
+  support.pointScatter.assign(3, CrossScatter3{});
+  support.normalSelfScatter.assign(3, CrossScatter3{});
+  // B's faces: spread widely along y (the cylinder's axis), narrowly along z,
+  // normals turning with z at curvature `k`.
+  const auto curveSide = [&](double k) {
+    CrossScatter3 turn, extent, self;
+    for (double y : {-0.35, 0.0, 0.35})
+      for (double z : {-0.1, 0.0, 0.1}) {
+        const Vec3 deviation(0, 0, k * z), offset(0, y, z);
+        turn.add(deviation, offset, 1.0 / 9);
+        extent.add(offset, offset, 1.0 / 9);
+        self.add(deviation, deviation, 1.0 / 9);
+      }
+    support.normalScatter[1] = turn;
+    support.pointScatter[1] = extent;
+    support.normalSelfScatter[1] = self;
+  };
+  es::InsertedVertexSource corner;
+  corner.original = {0, 1, 2};
+  corner.originalCount = 3;
+  corner.rest = Vec3(-0.1, -0.1, -0.1);
+  es::SharpenOptions opt;
+  opt.method = es::Method::Extended;
+  const Plane planes[3] = {support.plane[0], support.plane[1], support.plane[2]};
+
+  curveSide(5.0);
+  EXPECT_FALSE(es::detail::flankBendsAway(corner, planes, support, opt, Vec3(0, 0, 0)));
+  EXPECT_TRUE(es::detail::cornerPairBendsAway(corner, planes, support, opt));
+  Vec3 target;
+  EXPECT_EQ(es::proposePlacement(corner, support, opt, target), es::Placement::CurvedSupport);
+
+  // A gently curved side passes both: the corner is sharpened.
+  curveSide(0.5);
+  EXPECT_FALSE(es::detail::cornerPairBendsAway(corner, planes, support, opt));
+  ASSERT_EQ(es::proposePlacement(corner, support, opt, target), es::Placement::Moved);
+  EXPECT_LT(target.Norm(), 1e-12);
+}

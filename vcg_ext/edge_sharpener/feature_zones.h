@@ -302,6 +302,15 @@ RegionPlaneFit fitRegionPlane(const MeshType &m, const VertexFaceTable &vf,
   return fit;
 }
 
+/// Vertex v's support: the plane fitted near it and how the region departs.
+inline void storeFit(SupportPlanes &support, std::size_t v, const RegionPlaneFit &fit) {
+  support.plane[v] = fit.plane;
+  support.spreadRad[v] = fit.spreadRad;
+  support.normalScatter[v] = fit.normalScatter;
+  support.pointScatter[v] = fit.pointScatter;
+  support.normalSelfScatter[v] = fit.normalSelfScatter;
+}
+
 /// For every vertex with a plane, finds up to three other regions whose
 /// labelled vertices lie within `rings` hops (closest first) and records one
 /// vertex of each in zones.support.nearby; placement checks the planes' line
@@ -356,11 +365,7 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
   const std::size_t nv = m.vert.size();
   zones.vertexLabel.assign(nv, kZone);
   zones.inRegion.assign(nv, 0);
-  zones.support.plane.assign(nv, Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)});
-  zones.support.spreadRad.assign(nv, 0.0);
-  zones.support.normalScatter.assign(nv, CrossScatter3{});
-  zones.support.pointScatter.assign(nv, CrossScatter3{});
-  zones.support.normalSelfScatter.assign(nv, CrossScatter3{});
+  zones.support.resetMeasured(nv);
   std::vector<int> stamp(m.face.size(), -1);
   int stampValue = 0;
   std::vector<char> touchesZone(nv, 0);
@@ -384,11 +389,7 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
     if (label >= 0 && touchesZone[v]) {
       const RegionPlaneFit fit = fitRegionPlane(m, vf, zones, v, label, opt.supportRings, stamp,
                                                 stampValue++, opt.fitTrimAngleRad);
-      zones.support.plane[v] = fit.plane;
-      zones.support.spreadRad[v] = fit.spreadRad;
-      zones.support.normalScatter[v] = fit.normalScatter;
-      zones.support.pointScatter[v] = fit.pointScatter;
-      zones.support.normalSelfScatter[v] = fit.normalSelfScatter;
+      storeFit(zones.support, v, fit);
     }
   }
 
@@ -438,11 +439,7 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
       if (d < best) {  // ties keep the earlier (closer in hops) candidate
         best = d;
         zones.vertexLabel[v] = cand[v][i].region;
-        zones.support.plane[v] = pl;
-        zones.support.spreadRad[v] = zones.support.spreadRad[cand[v][i].anchor];
-        zones.support.normalScatter[v] = zones.support.normalScatter[cand[v][i].anchor];
-        zones.support.pointScatter[v] = zones.support.pointScatter[cand[v][i].anchor];
-        zones.support.normalSelfScatter[v] = zones.support.normalSelfScatter[cand[v][i].anchor];
+        zones.support.copyMeasured(v, cand[v][i].anchor);
       }
     }
     stats.labelledZoneVertices += zones.vertexLabel[v] >= 0;

@@ -99,9 +99,10 @@ struct SharpenOptions {
   /// An inserted vertex stays at rest when a flank's region, bending across
   /// the feature as measured where its plane was fitted, would leave that
   /// plane by more than this fraction of the vertex's displacement before
-  /// reaching the sharp edge (geometry.h: extrapolationBend). Negative
+  /// reaching the sharp edge (geometry.h: extrapolationBend); at a corner,
+  /// also for each pair of its planes toward their own line. Negative
   /// disables the test.
-  double maxBendFraction = 0.6;
+  double maxBendFraction = 0.45;
   /// ...tested where the fitted faces spread by at least this angle
   /// (radians): below it, marching cubes' staircase dominates the estimate...
   double minBendSpreadRad = 5.0 * M_PI / 180.0;

@@ -64,6 +64,23 @@ struct SupportPlanes {
   /// kNoVertex pads). Empty for the paper's method.
   static constexpr std::uint32_t kNoVertex = ~std::uint32_t(0);
   std::vector<std::array<std::uint32_t, 3>> nearby;
+
+  /// Extended method: n vertices with no plane and zero measures.
+  void resetMeasured(std::size_t n) {
+    plane.assign(n, Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)});
+    spreadRad.assign(n, 0.0);
+    normalScatter.assign(n, CrossScatter3{});
+    pointScatter.assign(n, CrossScatter3{});
+    normalSelfScatter.assign(n, CrossScatter3{});
+  }
+  /// Extended method: vertex `to` takes the plane and measures of `from`.
+  void copyMeasured(std::size_t to, std::size_t from) {
+    plane[to] = plane[from];
+    spreadRad[to] = spreadRad[from];
+    normalScatter[to] = normalScatter[from];
+    pointScatter[to] = pointScatter[from];
+    normalSelfScatter[to] = normalSelfScatter[from];
+  }
 };
 
 /// The paper's support planes: through each original vertex, orthogonal to
@@ -121,6 +138,26 @@ inline bool flankBendsAway(const InsertedVertexSource &src, const Plane *planes,
       continue;
     if (extrapolationBend(support.normalScatter[v], support.pointScatter[v], w / d, d) > allowed)
       return true;
+  }
+  return false;
+}
+
+/// At a corner, whether the flanks of any pair of its planes, meeting along
+/// their own line (the corner's edge through that pair), bend away before
+/// reaching it: a corner where a flat face meets two facets of one coarse
+/// cylinder passes the three-plane test while each edge-like pair overshoots.
+inline bool cornerPairBendsAway(const InsertedVertexSource &src, const Plane *planes,
+                                const SupportPlanes &support, const SharpenOptions &opt) {
+  if (src.originalCount != 3) return false;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    InsertedVertexSource pair = src;
+    pair.originalCount = 2;
+    pair.original = {src.original[i], src.original[j], 0};
+    const Plane pairPlanes[2] = {planes[i], planes[j]};
+    const auto onLine =
+        closestPointOnPlanePairLine(pairPlanes[0], pairPlanes[1], src.rest, opt.parallelAngleRad);
+    if (onLine && flankBendsAway(pair, pairPlanes, support, opt, *onLine)) return true;
   }
   return false;
 }
@@ -196,7 +233,8 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
     target = *x;
   }
   if (!support.normalScatter.empty() && opt.maxBendFraction >= 0 &&
-      detail::flankBendsAway(src, planes, support, opt, target))
+      (detail::flankBendsAway(src, planes, support, opt, target) ||
+       detail::cornerPairBendsAway(src, planes, support, opt)))
     return Placement::CurvedSupport;
   if (!support.nearby.empty() && opt.intermediatePlaneTolerance >= 0 &&
       detail::passesIntermediateRegion(src, planes, support, opt, target))
