@@ -57,7 +57,7 @@ double writeErrorColoring(es::Mesh& a, es::Mesh& b, double colorMax, const std::
   using Grid = vcg::GridStaticPtr<es::Mesh::FaceType, es::Mesh::ScalarType>;
   vcg::tri::UpdateNormal<es::Mesh>::PerFaceNormalized(b);
   Grid grid;
-  grid.Set(b.face.begin(), b.face.end());
+  grid.Set(b.face.begin(), b.face.end(), es::closestFaceGridBox(b, a));
   vcg::Box3<es::Mesh::ScalarType> both = a.bbox;
   both.Add(b.bbox);
   const es::Mesh::ScalarType searchRadius = 2 * both.Diag() + 1e-30f;

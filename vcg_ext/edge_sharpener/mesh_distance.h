@@ -82,6 +82,23 @@ class DistanceSampleSink {
   vcg::tri::HausdorffSampler<M>& sampler_;
 };
 
+}  // namespace detail
+
+/// The box to build a closest-face grid of `target` on, for queries at points of `queries`:
+/// both meshes' boxes with a margin. vcglib's grid spans only the target by default, and a
+/// query point just inside its far border can be rounded into a cell past its end (a crash).
+/// \pre both bounding boxes are up to date.
+template <class M>
+vcg::Box3<typename M::ScalarType> closestFaceGridBox(const M &target, const M &queries) {
+  using Scalar = typename M::ScalarType;
+  vcg::Box3<Scalar> span = target.bbox;
+  span.Add(queries.bbox);
+  span.Offset(span.Diag() * Scalar(0.05) + Scalar(1e-6));
+  return span;
+}
+
+namespace detail {
+
 template <class M>
 OneSidedDistance sampleDistance(M& sampled, M& target, double searchRadius,
                                 const DistanceOptions& options) {
@@ -89,13 +106,8 @@ OneSidedDistance sampleDistance(M& sampled, M& target, double searchRadius,
   using Sampling = vcg::tri::SurfaceSampling<M, Sink>;
 
   vcg::tri::HausdorffSampler<M> sampler(&target);
-  // vcglib's grid spans only the target, and a query point just inside its far border can be
-  // rounded into a cell past the end (a crash). Spanning both meshes with a margin keeps every
-  // sample well inside.
-  vcg::Box3<typename M::ScalarType> span = target.bbox;
-  span.Add(sampled.bbox);
-  span.Offset(span.Diag() * typename M::ScalarType(0.05) + typename M::ScalarType(1e-6));
-  sampler.unifGridFace.Set(target.face.begin(), target.face.end(), span);
+  sampler.unifGridFace.Set(target.face.begin(), target.face.end(),
+                           closestFaceGridBox(target, sampled));
   // Samples at this distance or farther are dropped, and the member starts uninitialised.
   sampler.dist_upper_bound = static_cast<typename M::ScalarType>(searchRadius);
   Sink sink(sampler);
