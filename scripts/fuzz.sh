@@ -2,7 +2,7 @@
 # Builds and runs the libFuzzer targets of fuzz/ (clang, ASan+UBSan) in
 # build-fuzz/ (or $EDGE_SHARPENER_FUZZ_DIR).
 #   scripts/fuzz.sh build                  configure + build only
-#   scripts/fuzz.sh run SECONDS [TARGET..] fuzz each target SECONDS (default: both)
+#   scripts/fuzz.sh run SECONDS [TARGET..] fuzz each target SECONDS (default: all)
 #   scripts/fuzz.sh smoke                  fixed seed and input count per target (the test suite's run)
 #   scripts/fuzz.sh merge                  minimise the working corpus into
 #                                          tests/reliability/fuzz_corpus/ (keeps old entries)
@@ -14,7 +14,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${EDGE_SHARPENER_FUZZ_DIR:-$here/build-fuzz}"
 data="$here/tests/reliability"
-targets=(fuzz_read_mesh fuzz_core_soup)
+targets=(fuzz_read_mesh fuzz_core_soup fuzz_distance)
 
 log() { printf 'fuzz: %s\n' "$*" >&2; }
 
@@ -60,7 +60,7 @@ case $cmd in
     smoke=0
     if [[ $cmd == smoke ]]; then
       smoke=1
-      declare -A SMOKE_RUNS=([fuzz_read_mesh]=2000 [fuzz_core_soup]=100000)
+      declare -A SMOKE_RUNS=([fuzz_read_mesh]=2000 [fuzz_core_soup]=100000 [fuzz_distance]=10000)
     fi
     if [[ $cmd == run ]]; then
       seconds=${2:?usage: fuzz.sh run SECONDS [TARGET...]}

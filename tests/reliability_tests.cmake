@@ -18,7 +18,7 @@ endif()
 
 # The fuzz targets' entry points, compiled with the project's compiler and
 # driven by a plain main over the saved inputs.
-foreach(_target fuzz_read_mesh fuzz_core_soup)
+foreach(_target fuzz_read_mesh fuzz_core_soup fuzz_distance)
   add_executable(reliability_replay_${_target}
     "${PROJECT_SOURCE_DIR}/fuzz/${_target}.cpp" "${PROJECT_SOURCE_DIR}/fuzz/replay_main.cpp")
   target_link_libraries(reliability_replay_${_target} PRIVATE edge_sharpener_core vcglib_plylib)
