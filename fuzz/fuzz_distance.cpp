@@ -10,8 +10,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>  // before vcglib: wrap/callback.h uses strcpy without including it
 #include <stdexcept>
 #include <string>
@@ -19,15 +17,12 @@
 
 #include "edge_sharpener/mesh_distance.h"
 #include "edge_sharpener/mesh_types.h"
+#include "fuzz_fail.h"
 
 namespace {
 
 namespace es = edge_sharpener;
-
-[[noreturn]] void fail(const std::string &what) {
-  std::fprintf(stderr, "fuzz invariant violated: %s\n", what.c_str());
-  std::abort();
-}
+using es_fuzz::fail;
 
 void checkSide(const es::OneSidedDistance &d, const char *side) {
   const double values[4] = {d.min, d.mean, d.rms, d.max};

@@ -10,16 +10,12 @@
 
 #include "edge_sharpener/edge_sharpener.h"
 #include "edge_sharpener/mesh_types.h"
+#include "fuzz_fail.h"
 #include "reliability/invariants.h"
 
 namespace es_fuzz {
 
 namespace es = edge_sharpener;
-
-[[noreturn]] inline void fail(const std::string &what) {
-  std::fprintf(stderr, "fuzz invariant violated: %s\n", what.c_str());
-  std::abort();
-}
 
 /// Sharpens a copy of `input` (compact, FF adjacency not needed) with `opt`.
 inline void sharpenAndCheck(es::Mesh &input, const es::SharpenOptions &opt) {

@@ -302,15 +302,6 @@ RegionPlaneFit fitRegionPlane(const MeshType &m, const VertexFaceTable &vf,
   return fit;
 }
 
-/// Vertex v's support: the plane fitted near it and how the region departs.
-inline void storeFit(SupportPlanes &support, std::size_t v, const RegionPlaneFit &fit) {
-  support.plane[v] = fit.plane;
-  support.spreadRad[v] = fit.spreadRad;
-  support.normalScatter[v] = fit.normalScatter;
-  support.pointScatter[v] = fit.pointScatter;
-  support.normalSelfScatter[v] = fit.normalSelfScatter;
-}
-
 /// For every vertex with a plane, finds up to three other regions whose
 /// labelled vertices lie within `rings` hops (closest first) and records one
 /// vertex of each in zones.support.nearby; placement checks the planes' line
@@ -389,7 +380,7 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
     if (label >= 0 && touchesZone[v]) {
       const RegionPlaneFit fit = fitRegionPlane(m, vf, zones, v, label, opt.supportRings, stamp,
                                                 stampValue++, opt.fitTrimAngleRad);
-      storeFit(zones.support, v, fit);
+      zones.support.storeMeasured(v, fit);
     }
   }
 

@@ -73,6 +73,16 @@ struct SupportPlanes {
     pointScatter.assign(n, CrossScatter3{});
     normalSelfScatter.assign(n, CrossScatter3{});
   }
+  /// Extended method: vertex v takes a fitted plane and its measures (`fit`
+  /// has the same fields: feature_zones.h, RegionPlaneFit).
+  template <class Fit>
+  void storeMeasured(std::size_t v, const Fit &fit) {
+    plane[v] = fit.plane;
+    spreadRad[v] = fit.spreadRad;
+    normalScatter[v] = fit.normalScatter;
+    pointScatter[v] = fit.pointScatter;
+    normalSelfScatter[v] = fit.normalSelfScatter;
+  }
   /// Extended method: vertex `to` takes the plane and measures of `from`.
   void copyMeasured(std::size_t to, std::size_t from) {
     plane[to] = plane[from];
