@@ -28,6 +28,8 @@ struct CliOptions {
   es::SharpenOptions extended;  // tuning of the extended method
   double degenerateAngleDeg = 1.0;
   bool keepContacts = false;
+  bool strict = false;                             // the strict plane guard's preset
+  double borderTurnFactor = -1, maxOffPlane = -1;  // its settings one by one (-1: unset)
   bool noLengthCheck = false, noConvexityCheck = false;
   bool colorize = false, detectOnly = false, json = false, quiet = false;
 };
@@ -74,6 +76,9 @@ int run(const CliOptions &cli) {
   opt.smoothMultiplier = cli.multiplier;
   opt.method = cli.method == "extended" ? es::Method::Extended : es::Method::Paper;
   opt.openRegionContacts = !cli.keepContacts;
+  opt.setStrictPlaneGuard(cli.strict);
+  if (cli.borderTurnFactor >= 0) opt.borderTurnThresholdFactor = cli.borderTurnFactor;
+  if (cli.maxOffPlane >= 0) opt.maxSourceOffPlaneSpacings = cli.maxOffPlane;
   opt.edgeLengthCheck = !cli.noLengthCheck;
   opt.convexityCheck = !cli.noConvexityCheck;
   opt.degenerateAngleRad = cli.degenerateAngleDeg * M_PI / 180.0;
@@ -162,6 +167,17 @@ int main(int argc, char **argv) {
                  "fraction of the angle between their planes (a blend; 0: off)")
       ->default_val(cli.extended.maxSupportSpreadRatio)
       ->check(CLI::Range(0.0, 10.0));
+  app.add_flag("--strict", cli.strict,
+               "extended: strict plane guard (--border-turn 1 --max-off-plane 0.3): keeps blends "
+               "and finely facetted curves at rest; also keeps wide bevels of coarse remeshings");
+  app.add_option("--border-turn", cli.borderTurnFactor,
+                 "extended: return to the zone the region faces next to it that turn from their "
+                 "region's plane by more than this multiple of the smooth threshold (0: off)")
+      ->check(CLI::Range(0.0, 100.0));
+  app.add_option("--max-off-plane", cli.maxOffPlane,
+                 "extended: keep a vertex at rest when a source vertex lies farther than this "
+                 "many median edge lengths from its plane (0: off)")
+      ->check(CLI::Range(0.0, 100.0));
   app.add_flag("--keep-contacts", cli.keepContacts,
                "extended: leave faces where two smooth regions touch in their regions");
   app.add_flag("--no-length-check", cli.noLengthCheck,

@@ -16,7 +16,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
     if (p != Placement::Original && p != Placement::Moved)
       placement["fallback_" + std::string(toString(p))] = r.placement.byOutcome[i];
   }
-  return {
+  nlohmann::json j = {
       {"input",
        {{"vertices", r.inputVertices},
         {"faces", r.inputFaces},
@@ -61,6 +61,19 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
         {"rounds", r.intersections.rounds},
         {"remaining", r.intersections.remaining}}},
   };
+  if (r.extendedMethod)
+    j["extended"] = {{"regions", r.extended.regions},
+                     {"corridors", r.extended.corridors},
+                     {"opened_contacts", r.extended.openedContacts},
+                     {"opened_creases", r.extended.openedCreases},
+                     {"returned_border_faces", r.extended.returnedBorderFaces},
+                     {"zone_faces", r.extended.zoneFaces},
+                     {"zone_vertices", r.extended.zoneVertices},
+                     {"labelled_zone_vertices", r.extended.labelledZoneVertices},
+                     {"projected_vertices", r.extended.projectedVertices},
+                     {"projections_rejected", r.extended.projectionsRejected},
+                     {"max_projection", r.extended.maxProjection}};
+  return j;
 }
 
 }  // namespace edge_sharpener

@@ -302,6 +302,83 @@ RegionPlaneFit fitRegionPlane(const MeshType &m, const VertexFaceTable &vf,
   return fit;
 }
 
+/// Returns to the zone the region faces around the zone's border that turn
+/// away from their region's plane, fitted there as labelZoneVertices() fits
+/// it, by more than `maxTurnRad`: a strip of chamfer faces whose edges passed
+/// the smooth test grew into the region and tilts the plane fitted across it.
+/// Every fit reads the regions as they were before this stage (one ring of
+/// faces is returned, never more).
+/// \pre segmentRegions() ran (and the opening stages, when enabled).
+/// \return the number of faces returned to the zone.
+template <class MeshType>
+std::size_t returnTurnedBorderFaces(const MeshType &m, const MeshLabels<MeshType> &labels,
+                                    const VertexFaceTable &vf, const SharpenOptions &opt,
+                                    double maxTurnRad, FeatureZones &zones) {
+  std::vector<char> turned(m.face.size(), 0);
+  std::vector<int> stamp(m.face.size(), -1);
+  int stampValue = 0;
+  std::vector<int> regionsAtVertex;
+  for (std::size_t v = 0; v < m.vert.size(); ++v) {
+    regionsAtVertex.clear();
+    bool touchesZone = false;
+    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
+      const int r = zones.faceRegion[*fi];
+      if (r == kZone)
+        touchesZone = true;
+      else if (std::find(regionsAtVertex.begin(), regionsAtVertex.end(), r) ==
+               regionsAtVertex.end())
+        regionsAtVertex.push_back(r);
+    }
+    if (!touchesZone) continue;
+    for (const int r : regionsAtVertex) {
+      const RegionPlaneFit fit = fitRegionPlane(m, vf, zones, v, r, opt.supportRings, stamp,
+                                                stampValue++, opt.fitTrimAngleRad);
+      if (fit.plane.normal.SquaredNorm() == 0) continue;
+      for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
+        if (zones.faceRegion[*fi] == r &&
+            angleBetween(labels.normal[&m.face[*fi]], fit.plane.normal) > maxTurnRad)
+          turned[*fi] = 1;
+    }
+  }
+  std::size_t returned = 0;
+  for (std::size_t f = 0; f < turned.size(); ++f)
+    if (turned[f]) {
+      zones.faceRegion[f] = kZone;
+      ++returned;
+    }
+  return returned;
+}
+
+/// The input's sample spacing: the median length of its edges.
+template <class MeshType>
+double medianEdgeLength(const MeshType &m) {
+  std::vector<double> lengths;
+  lengths.reserve(3 * m.face.size());
+  for (const auto &f : m.face)
+    if (!f.IsD())
+      for (int i = 0; i < 3; ++i)
+        lengths.push_back((positionOf(f.cV(i)) - positionOf(f.cV((i + 1) % 3))).Norm());
+  if (lengths.empty()) return 0.0;
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+/// Fills zones.support.offPlane (how far each labelled vertex lies from its
+/// own plane) and zones.support.sampleSpacing, which placement reads for the
+/// strict plane guard (SharpenOptions::maxSourceOffPlaneSpacings).
+/// \pre labelZoneVertices() ran.
+template <class MeshType>
+void measureOffPlane(const MeshType &m, FeatureZones &zones) {
+  auto &support = zones.support;
+  support.offPlane.assign(m.vert.size(), 0.0);
+  for (std::size_t v = 0; v < m.vert.size(); ++v) {
+    const Plane &pl = support.plane[v];
+    if (pl.normal.SquaredNorm() > 0)
+      support.offPlane[v] = std::abs(pl.normal * (positionOf(&m.vert[v]) - pl.point));
+  }
+  support.sampleSpacing = medianEdgeLength(m);
+}
+
 /// For every vertex with a plane, finds up to three other regions whose
 /// labelled vertices lie within `rings` hops (closest first) and records one
 /// vertex of each in zones.support.nearby; placement checks the planes' line

@@ -43,8 +43,9 @@ enum class Placement : std::uint8_t {
   FarFromChamfer,      ///< extended method: the planes meet farther off than their angle allows
   CurvedSupport,       ///< extended method: the regions curve like a blend, not a sharp edge
   IntersectionRevert,  ///< moved back: a face of it intersected another face
+  OffPlaneSource,      ///< extended method, strict guard: a source vertex lies off its plane
 };
-constexpr int kPlacementCount = 11;
+constexpr int kPlacementCount = 12;
 
 const char *toString(Placement p);
 
@@ -60,6 +61,7 @@ inline const char *toString(Placement p) {
     case Placement::DegenerateRevert: return "degenerate_revert";
     case Placement::FarFromChamfer: return "far_from_chamfer";
     case Placement::CurvedSupport: return "curved_support";
+    case Placement::OffPlaneSource: return "off_plane_source";
     case Placement::IntersectionRevert: return "intersection_revert";
   }
   return "unknown";

@@ -118,6 +118,31 @@ struct SharpenOptions {
   /// faces of the chamfer. 0: no refit.
   double fitTrimAngleRad = 15.0 * M_PI / 180.0;
 
+  // --- Extended method, strict plane guard (off by default; `--strict`) ---
+
+  /// Before zone labelling, region faces touching the zone whose normal turns
+  /// from their region's plane fitted there by more than this multiple of the
+  /// smooth-edge threshold return to the zone (feature_zones.h:
+  /// returnTurnedBorderFaces): a strip of chamfer faces that grew into a
+  /// region tilts its plane. 0 disables (default); the strict setting is 1.
+  double borderTurnThresholdFactor = 0.0;
+  /// An inserted vertex stays at rest when one of its source vertices lies
+  /// farther from its plane than this many sample spacings (the input's
+  /// median edge length): the plane does not describe the surface that vertex
+  /// samples (a blend or finely facetted curve, a face hardly wider than the
+  /// sampling). 0 disables (default); the strict setting is 0.3. It also
+  /// keeps the wide bevels of coarse remeshings and the truncated tips of
+  /// acute corners at rest, which is why it is not on by default.
+  double maxSourceOffPlaneSpacings = 0.0;
+
+  /// The strict plane guard: both settings above at their strict values.
+  void setStrictPlaneGuard(bool on) {
+    borderTurnThresholdFactor = on ? kStrictBorderTurnThresholdFactor : 0.0;
+    maxSourceOffPlaneSpacings = on ? kStrictMaxSourceOffPlaneSpacings : 0.0;
+  }
+  static constexpr double kStrictBorderTurnThresholdFactor = 1.0;
+  static constexpr double kStrictMaxSourceOffPlaneSpacings = 0.3;
+
   /// Optional progress callback (percent, stage name); may be null.
   vcg::CallBackPos *progress = nullptr;
 };

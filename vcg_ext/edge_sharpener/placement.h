@@ -64,6 +64,11 @@ struct SupportPlanes {
   /// kNoVertex pads). Empty for the paper's method.
   static constexpr std::uint32_t kNoVertex = ~std::uint32_t(0);
   std::vector<std::array<std::uint32_t, 3>> nearby;
+  /// Extended method with the strict plane guard: each vertex's distance
+  /// from its own plane, and the input's sample spacing (median edge
+  /// length); empty / 0 otherwise.
+  std::vector<double> offPlane;
+  double sampleSpacing = 0;
 
   /// Extended method: n vertices with no plane and zero measures.
   void resetMeasured(std::size_t n) {
@@ -254,6 +259,13 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
       if (chamferApexHeightRatio(planes[i], planes[(i + 1) % src.originalCount], target) >
           opt.apexHeightFactor)
         return Placement::FarFromChamfer;
+  }
+  if (!support.offPlane.empty() && opt.maxSourceOffPlaneSpacings > 0) {
+    // A source the plane does not describe: the planes' edge is not where
+    // the samples around it put the surface (a blend, a facetted curve).
+    const double limit = opt.maxSourceOffPlaneSpacings * support.sampleSpacing;
+    for (int i = 0; i < src.originalCount; ++i)
+      if (support.offPlane[src.original[i]] > limit) return Placement::OffPlaneSource;
   }
   return Placement::Moved;
 }

@@ -83,6 +83,7 @@ struct ExtendedStats {
   std::size_t corridors = 0;             ///< thin smooth regions returned to the zone
   std::size_t openedContacts = 0;        ///< region faces returned to the zone at region contacts
   std::size_t openedCreases = 0;         ///< region faces returned to the zone at internal creases
+  std::size_t returnedBorderFaces = 0;   ///< border faces turned from their region's plane (strict)
   std::size_t zoneFaces = 0;             ///< faces outside every region
   std::size_t zoneVertices = 0;          ///< vertices outside every region
   std::size_t labelledZoneVertices = 0;  ///< zone vertices given a region label
@@ -124,7 +125,10 @@ inline std::string formatReport(const SharpenReport &r) {
     s << "feature zones: " << r.extended.regions << " smooth regions (" << r.extended.corridors
       << " corridors dissolved), " << r.extended.zoneFaces << " zone faces ("
       << r.extended.openedContacts << " opened at region contacts, " << r.extended.openedCreases
-      << " at internal creases), " << r.extended.labelledZoneVertices << " of "
+      << " at internal creases";
+    if (r.extended.returnedBorderFaces > 0)
+      s << ", " << r.extended.returnedBorderFaces << " turned from their region's plane";
+    s << "), " << r.extended.labelledZoneVertices << " of "
       << r.extended.zoneVertices << " zone vertices labelled";
     if (r.geometryChanged)
       s << ", " << r.extended.projectedVertices << " projected onto their region (max "

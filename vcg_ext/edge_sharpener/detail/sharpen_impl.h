@@ -65,7 +65,13 @@ void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
     report.extended.openedCreases = openInternalCreases(m, labels, vf, creaseAngle, zones);
     report.extended.zoneFaces += report.extended.openedCreases;
   }
+  if (opt.borderTurnThresholdFactor > 0) {
+    report.extended.returnedBorderFaces = returnTurnedBorderFaces(
+        m, labels, vf, opt, opt.borderTurnThresholdFactor * report.smooth.thresholdRad, zones);
+    report.extended.zoneFaces += report.extended.returnedBorderFaces;
+  }
   labelZoneVertices(m, vf, opt, zones, report.extended);
+  if (opt.maxSourceOffPlaneSpacings > 0) measureOffPlane(m, zones);
   report.filters = markZoneChamfers(m, labels, zones, opt.sameRegionFeatureAngleRad);
 }
 
