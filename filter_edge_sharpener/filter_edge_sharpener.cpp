@@ -96,6 +96,21 @@ const OptionParam kMethod{
       o.method = par.getEnum("method") == 1 ? es::Method::Extended : es::Method::Paper;
     }};
 
+const OptionParam kStrictPlaneGuard{
+    [](RichParameterList &par, const es::SharpenOptions &d) {
+      par.addParam(RichBool(
+          "strictPlaneGuard", d.maxSourceOffPlaneSpacings > 0, "Strict plane guard (extended)",
+          "Extended method only. Region faces next to the feature zone that turn away from "
+          "their region's plane return to the zone, and an inserted vertex stays at rest when "
+          "a vertex it comes from lies more than 0.3 median edge lengths off its plane. Keeps "
+          "blends and finely facetted curves rounded (fandisk: max error 0.52% -> 0.39% at 1% "
+          "cells), but also leaves the wide bevels of coarse remeshings and the tips of acute "
+          "corners chamfered."));
+    },
+    [](const RichParameterList &par, es::SharpenOptions &o) {
+      o.setStrictPlaneGuard(par.getBool("strictPlaneGuard"));
+    }};
+
 // ---------------------------------------------------------------------------
 // Filters.
 
@@ -134,7 +149,8 @@ const std::vector<FilterSpec> &filterTable() {
        "angle are removed.<br>"
        "Needs a two-manifold triangle mesh (point clouds and non-manifold meshes are "
        "refused and left untouched). The report of every stage is written to the log.",
-       {&kMethod, &kSmoothMultiplier, &kEdgeLengthCheck, &kColorize, &kDegenerateAngle},
+       {&kMethod, &kSmoothMultiplier, &kEdgeLengthCheck, &kColorize, &kDegenerateAngle,
+        &kStrictPlaneGuard},
        &es::sharpen<CMeshO>,
        false,
        MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |
@@ -147,7 +163,7 @@ const std::vector<FilterSpec> &filterTable() {
        "others grey) and selects the chamfer and corner triangles, i.e. the faces that "
        "<i>Sharpen Chamfered Edges</i> would subdivide.<br>"
        "Useful to tune the smooth-edge multiplier before sharpening.",
-       {&kMethod, &kSmoothMultiplier},
+       {&kMethod, &kSmoothMultiplier, &kStrictPlaneGuard},
        &es::detectChamfers<CMeshO>,
        true,
        MeshModel::MM_VERTCOLOR | MeshModel::MM_FACECOLOR | MeshModel::MM_FACEFLAGSELECT},

@@ -25,9 +25,11 @@ check_filter "Edge-Sharpener: Sharpen Chamfered Edges" "Enum|Method
 Float|Smooth-edge multiplier
 Bool|Edge-length check
 Bool|Colorize
-Float|Degenerate angle (deg)"
+Float|Degenerate angle (deg)
+Bool|Strict plane guard (extended)"
 check_filter "Edge-Sharpener: Detect Chamfers" "Enum|Method
-Float|Smooth-edge multiplier"
+Float|Smooth-edge multiplier
+Bool|Strict plane guard (extended)"
 
 total=$(sed -n 's/^Total \([0-9]*\) filtering actions.*/\1/p' listing.out)
 log "meshlabserver reports $total filtering actions"

@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
 # sharpen.mlx through meshlabserver gives the same mesh as the CLI with the same
-# parameters (plain, and with colours), on chamfered marching-cubes meshes.
+# parameters (plain, with colours, and the extended method with the strict plane
+# guard), on chamfered marching-cubes meshes.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [[ -n ${ES_CLI:-} && -x ${ES_CLI:-} ]] || fail "the edge-sharpener CLI is not built (ES_CLI='${ES_CLI:-}')"
 
 sed 's/name="colorize" type="RichBool" value="false"/name="colorize" type="RichBool" value="true"/' \
   "$SCRIPTS/sharpen.mlx" >sharpen_colorize.mlx
 grep -q 'name="colorize" type="RichBool" value="true"' sharpen_colorize.mlx || fail "cannot derive sharpen_colorize.mlx"
+sed -e 's/name="method" type="RichEnum" value="0"/name="method" type="RichEnum" value="1"/' \
+  -e 's/name="strictPlaneGuard" type="RichBool" value="false"/name="strictPlaneGuard" type="RichBool" value="true"/' \
+  "$SCRIPTS/sharpen.mlx" >sharpen_strict.mlx
+[[ $(grep -c 'value="1"\|value="true"' sharpen_strict.mlx) -ge 3 ]] || fail "cannot derive sharpen_strict.mlx"
+strict_rejections=0
 
 mapfile -t inputs < <(chamfered_inputs)
 for in in "${inputs[@]}"; do
@@ -33,5 +39,17 @@ for in in "${inputs[@]}"; do
   ((colours >= 3)) || fail "$n: only $colours face colour(s): labels not painted"
   "$ES_TEST_TOOL" compare "$n.plugin_color.ply" "$n.cli_color.ply" --rel-tol 1e-5 --colors ||
     fail "$n: plugin and CLI differ with colours"
-  log "$n: plugin == CLI ($in_faces -> $out_faces faces, $colours face colours)"
+
+  run_server "$n.plugin_strict" -i "$in" -o "$n.plugin_strict.ply" -m vc fc ff -s sharpen_strict.mlx \
+    -l "$n.plugin_strict.log"
+  ((rc == 0)) || { cat "$n.plugin_strict.out" >&2; fail "$n: meshlabserver (strict) status $rc"; }
+  "$ES_CLI" "$in" "$n.cli_strict.ply" --method extended --strict >"$n.cli_strict.txt" 2>&1 ||
+    { cat "$n.cli_strict.txt" >&2; fail "$n: CLI --method extended --strict failed"; }
+  "$ES_TEST_TOOL" compare "$n.plugin_strict.ply" "$n.cli_strict.ply" --rel-tol 1e-5 ||
+    fail "$n: plugin and CLI differ with the strict plane guard"
+  grep -q 'off_plane_source' "$n.plugin_strict.log" && strict_rejections=$((strict_rejections + 1))
+  log "$n: plugin == CLI ($in_faces -> $out_faces faces, $colours face colours; strict guard too)"
 done
+# The parameter reaches the core: on some input (the pyramid's acute corners)
+# the strict guard keeps vertices at rest, and the plugin's log says so.
+((strict_rejections > 0)) || fail "strictPlaneGuard=true kept no vertex at rest on any input"
