@@ -11,6 +11,10 @@ import subprocess
 PAPER_CLAIM = ("fandisk remeshed by SwingWrapper: max error 0.89% -> 0.43% of the diagonal "
                "(x2.07); L2 error about a fifth (x5) for dense remeshings (Figure 10)")
 WORSE_TOLERANCE = 0.01  # "worse" = more than 1% above the input (sampling noise is below 0.3%)
+# The runs' variants (run.py VARIANTS): the two methods, and the extended method with the
+# opt-in strict plane guard (default multiplier only).
+VARIANTS = ("paper", "extended", "extended-strict")
+STRICT = "extended-strict"
 
 
 def gmean(values):
@@ -85,7 +89,11 @@ def write(results, tools, cache, docs):
       "the two sides (RMS = sqrt((RMS_fwd² + RMS_bwd²)/2)). A reduction factor is before/after "
       "(×2 = error halved; below ×1 = worse; both floored at 1e-4% of the diagonal, the "
       "measurement noise of float meshes, so an exact result does not give ×∞). *paper* and *extended* are the two methods of "
-      f"`edge-sharpener --method`, default parameters (multiplier {m:g}, length check on). "
+      f"`edge-sharpener --method`, default parameters (multiplier {m:g}, length check on); "
+      "*strict* (*extended-strict*) is the extended method with the opt-in strict plane guard "
+      "(`--method extended --strict`: border faces turned from their region's plane return to "
+      "the zone, and a vertex whose source lies more than 0.3 median edge lengths off its plane "
+      "stays at rest). "
       "Inputs are made by Debian's real `meshlabserver` 2020.09 from the reference: "
       "Uniform Mesh Resampling (marching cubes; cell = % of the diagonal, Clean Vertices off), "
       "Isotropic Explicit Remeshing (target length = % of the diagonal, crease angle 181° = no "
@@ -205,19 +213,20 @@ def write(results, tools, cache, docs):
 
 
 def headline_table(fan, m):
-    rows = ["| input | res. | faces | max before | max paper | max extended | RMS before | "
-            "RMS paper | RMS extended |", "|---|---|---|---|---|---|---|---|---|"]
+    rows = ["| input | res. | faces | max before | max paper | max extended | max strict | "
+            "RMS before | RMS paper | RMS extended | RMS strict |",
+            "|---|---|---|---|---|---|---|---|---|---|---|"]
     for c in fan:
         if c["input"] == "asis":
             continue
         b = c["before"]
-        p, e = run_of(c, "paper", m), run_of(c, "extended", m)
+        runs = [run_of(c, v, m) for v in VARIANTS]
         cells = [c["input_title"], c["resolution"], f"{b['faces']:,}", fmt(b["max"])]
-        for r in (p, e):
+        for r in runs:
             cells.append(f"{fmt(r['after']['max'])} ({fx(factor(b['max'], r['after']['max']))})"
                          if r else "–")
         cells.append(fmt(b["rms"], 3))
-        for r in (p, e):
+        for r in runs:
             cells.append(f"{fmt(r['after']['rms'])} ({fx(factor(b['rms'], r['after']['rms']))})"
                          if r else "–")
         rows.append("| " + " | ".join(cells) + " |")
@@ -231,7 +240,8 @@ def sharp_cases(cases):
 
 def summary_table(cases, m):
     rows = ["| input | n | paper: max | paper: RMS | paper worse | extended: max | extended: RMS "
-            "| extended worse |", "|---|---|---|---|---|---|---|---|"]
+            "| extended worse | strict: max | strict: RMS | strict worse |",
+            "|---|---|---|---|---|---|---|---|---|---|---|"]
     groups = {}
     for c in sharp_cases(cases):
         groups.setdefault((c["input_title"], c["resolution"], c["order"]), []).append(c)
@@ -245,7 +255,7 @@ def summary_table(cases, m):
 
 def summary_row(label, cs, m):
     cells = [label, str(len(cs))]
-    for method in ("paper", "extended"):
+    for method in VARIANTS:
         pairs = [(c, run_of(c, method, m)) for c in cs]
         pairs = [(c, r) for c, r in pairs if r]
         cells.append(fx(gmean([factor(c["before"]["max"], r["after"]["max"]) for c, r in pairs])))
@@ -336,7 +346,7 @@ def unchanged_table(cases, m):
             continue
         if c["model"] == "chamfer-cube":
             continue
-        for method in ("paper", "extended"):
+        for method in VARIANTS:
             r = run_of(c, method, m)
             if not r:
                 continue
@@ -349,7 +359,7 @@ def unchanged_table(cases, m):
         c = cc[0]
         rows.append("")
         rows.append("chamfer-cube.off (45° bevels on every edge; the reference is the sharp box): ")
-        for method in ("paper", "extended"):
+        for method in VARIANTS:
             r = run_of(c, method, m)
             if r:
                 rows.append(f"{method}: max {fmt(c['before']['max'])} -> {fmt(r['after']['max'])}, "
@@ -408,7 +418,7 @@ def full_table(cases, m):
             "|---|---|---|---|---|---|---|---|---|---|"]
     for c in cases:
         b = c["before"]
-        for method in ("paper", "extended"):
+        for method in VARIANTS:
             r = run_of(c, method, m)
             if not r:
                 continue
@@ -470,7 +480,7 @@ def plot_resolution(cases, model, m, path):
             xs = [c["before"]["faces"] for c in cs]
             ax.plot(xs, [c["before"][key] for c in cs], "o-", color=color, alpha=0.45,
                     label=f"{label}: input")
-            for method, style in (("paper", "s--"), ("extended", "^-")):
+            for method, style in (("paper", "s--"), ("extended", "^-"), (STRICT, "v:")):
                 pts = [(c["before"]["faces"], run_of(c, method, m)) for c in cs]
                 pts = [(x, r["after"][key]) for x, r in pts if r]
                 if pts:
@@ -505,7 +515,7 @@ def render_case(results, tools, cache, case, m, path):
         return False
     scale = 0.5 * case["before"]["max"] / 100.0 * results["diagonals"][model]
     panels = [("input (" + case["input_title"] + ")", in_path, case["before"])]
-    for method in ("paper", "extended"):
+    for method in VARIANTS:
         r = run_of(case, method, m)
         out = os.path.join(cache, "outputs", f"{model}__{kind}_1pct__{method}_m{m:g}.ply")
         if r and os.path.exists(out):

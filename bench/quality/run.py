@@ -9,7 +9,8 @@ For every reference mesh (the exact generated test shapes, and every mesh in
      feature-preserving competitor "Marching Cubes (RIMLS)" from the same points; they are
      cached in CACHE/inputs (a MeshLab abort or time-out is cached and reported, not fatal);
   2. sharpens each with the edge-sharpener CLI (identical to the MeshLab filter), both
-     methods (paper, extended), default multiplier and a multiplier sweep;
+     methods (paper, extended), default multiplier and a multiplier sweep, and the extended
+     method with the opt-in strict plane guard (--strict, default multiplier);
   3. measures every mesh against the reference with mesh-distance --json (two-sided, Metro);
   4. writes CACHE/results.json and, unless --no-report, docs/results.md and
      docs/images/results-*.png (report.py).
@@ -17,7 +18,8 @@ For every reference mesh (the exact generated test shapes, and every mesh in
 Python 3 standard library only; the figures need matplotlib (Debian python3-matplotlib)
 and are skipped with a note without it.
 
-  bench/quality/run.py --build BUILD_DIR [--fast] [--jobs N] [--cache DIR] [--refresh]
+  bench/quality/run.py --build BUILD_DIR [--fast] [--models a,b] [--inputs umr,ier] [--jobs N]
+                       [--cache DIR] [--refresh]
 """
 import argparse
 import concurrent.futures
@@ -36,6 +38,11 @@ sys.path.insert(0, HERE)
 import meshlab  # noqa: E402
 
 METHODS = ("paper", "extended")
+# Every run is one of these variants of the CLI (the name is the run's "method").
+# The strict plane guard is opt-in: it runs at the default multiplier only.
+VARIANTS = {"paper": ["--method", "paper"], "extended": ["--method", "extended"],
+            "extended-strict": ["--method", "extended", "--strict"]}
+SWEPT_VARIANTS = METHODS
 DEFAULT_MULTIPLIER = 2.0
 SWEEP = (1.5, 2.0, 2.5, 3.0)
 GENERATED_SHAPES = ("cube", "lblock", "lblock_tilted", "wedge", "pyramid", "cross_prism",
@@ -269,7 +276,7 @@ def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cach
     key = f"{model.name}__{spec.key}__{method}_m{mult:g}"
     out = os.path.join(cache, "outputs", key + ".ply")
     row = {"method": method, "multiplier": mult}
-    cmd = [tools.cli, in_path, out, "--method", method, "--multiplier", str(mult), "--json", "-q"]
+    cmd = [tools.cli, in_path, out, *VARIANTS[method], "--multiplier", str(mult), "--json", "-q"]
     rep, wall, err = run_json(cmd, timeout)
     if rep is None:
         row.update(status="sharpen failed", why=err)
@@ -309,8 +316,8 @@ def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout):
         case["make"] = dict(info, status="failed", why=f"input not measurable: {err}")
         return case
     case["before"] = d
-    for method in METHODS:
-        for mult in multipliers:
+    for method in VARIANTS:
+        for mult in multipliers if method in SWEPT_VARIANTS else [DEFAULT_MULTIPLIER]:
             case["runs"].append(sharpen_and_measure(tools, model, spec, in_path, d, method, mult,
                                                     cache, timeout))
     return case
@@ -333,6 +340,8 @@ def main():
     ap.add_argument("--fast", action="store_true",
                     help="generated shapes only, UMR 1%% only, multiplier 2 (the CTest subset)")
     ap.add_argument("--models", help="comma-separated model names to run (default all)")
+    ap.add_argument("--inputs", help="comma-separated input kinds to make (asis, umr, mc, ier, "
+                    "csg, poisson, rimls; default all)")
     ap.add_argument("--jobs", type=int, default=2, help="parallel sharpen/measure jobs")
     ap.add_argument("--timeout", type=int, default=600, help="time limit of each step, seconds")
     ap.add_argument("--refresh", action="store_true", help="remake the cached MeshLab inputs")
@@ -362,6 +371,8 @@ def main():
     only = set(args.models.split(",")) if args.models else None
     models = collect_models(tools, cache, os.path.abspath(args.shared), args.fast, only)
     specs = input_specs(args.fast)
+    if args.inputs:
+        specs = [s for s in specs if s.kind in args.inputs.split(",")]
     started = time.monotonic()
 
     # (a) MeshLab inputs, one at a time (two Xvfb servers would race for a display).
@@ -388,7 +399,7 @@ def main():
     diags = {m.name: m.diag for m in models}
     results = {"generated_at": time.strftime("%Y-%m-%d %H:%M:%S"),
                "fast": args.fast, "seconds": round(time.monotonic() - started, 1),
-               "methods": list(METHODS), "default_multiplier": DEFAULT_MULTIPLIER,
+               "methods": list(VARIANTS), "default_multiplier": DEFAULT_MULTIPLIER,
                "sweep": list(SWEEP), "notes": notes, "diagonals": diags, "cases": cases,
                "git": _git_describe()}
     with open(out, "w") as f:
