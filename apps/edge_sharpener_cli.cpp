@@ -162,6 +162,11 @@ int main(int argc, char **argv) {
                  "extended: the edge-length check allows this multiple of the longest input edge")
       ->default_val(cli.extended.extendedEdgeLengthFactor)
       ->check(CLI::Range(1.0, 100.0));
+  app.add_option("--max-displacement", cli.extended.maxDisplacementSpacings,
+                 "extended: keep a vertex at rest when the planes meet farther than this many "
+                 "median edge lengths from it (0: off)")
+      ->default_val(cli.extended.maxDisplacementSpacings)
+      ->check(CLI::Range(0.0, 1000.0));
   app.add_option("--spread-ratio", cli.extended.maxSupportSpreadRatio,
                  "extended: keep a vertex at rest when its regions turn by more than this "
                  "fraction of the angle between their planes (a blend; 0: off)")

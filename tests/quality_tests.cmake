@@ -7,6 +7,8 @@
 #   quality.hausdorff_crosscheck  mesh-distance agrees with MeshLab's "Hausdorff Distance".
 #   quality.fandisk_targets     fandisk (../shared/meshes) resampled by MeshLab at 2/1/0.5%:
 #                               the met headline targets (skipped without ../shared).
+#   quality.cad_as_is           the ../shared meshes sharpened as they are (extended, strict):
+#                               no vertex thrown far away (skipped without ../shared).
 # The full benchmark (docs/results.md) is scripts/bench-quality.sh, not a test.
 # All exit 77 (skipped) when MeshLab or python3 is not installed, fandisk_targets also without
 # ../shared. Run: ctest -L quality
@@ -18,3 +20,4 @@ endfunction()
 edge_sharpener_quality_test(fast_subset fast_subset.sh 900)
 edge_sharpener_quality_test(hausdorff_crosscheck hausdorff_crosscheck.sh 600)
 edge_sharpener_quality_test(fandisk_targets fandisk_targets.sh 900)
+edge_sharpener_quality_test(cad_as_is cad_as_is.sh 600)

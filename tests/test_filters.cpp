@@ -329,7 +329,8 @@ TEST(Fallbacks, CornerPairBendsAwayWhereTheCornerDoesNot) {
 
 // The strict plane guard: an inserted vertex whose source lies off its own
 // plane (a blend's sample, not a flank's) stays at rest; within the limit,
-// or with the guard off, it moves onto the planes' edge.
+// or with the guard off, it moves onto the planes' edge. So does one whose
+// sharp edge lies more than maxDisplacementSpacings sample spacings away.
 TEST(Fallbacks, SourceOffItsPlaneKeepsVertexAtRest) {
   using es::Plane;
   using es::Vec3;
@@ -352,6 +353,14 @@ TEST(Fallbacks, SourceOffItsPlaneKeepsVertexAtRest) {
   opt.setStrictPlaneGuard(true);  // limit 0.3 x 0.1 = 0.03 < 0.05
   EXPECT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::OffPlaneSource);
   opt.maxSourceOffPlaneSpacings = 0.6;  // limit 0.06 > 0.05
+  EXPECT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::Moved);
+
+  // The displacement bound: the sharp edge lies 0.141 from the chamfer's
+  // middle, more than 2.5 sample spacings of 0.05 but less than 2.5 x 0.1.
+  opt.setStrictPlaneGuard(false);
+  support.sampleSpacing = 0.05;
+  EXPECT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::FarFromChamfer);
+  opt.maxDisplacementSpacings = 0;  // bound off
   EXPECT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::Moved);
 }
 

@@ -363,10 +363,9 @@ double medianEdgeLength(const MeshType &m) {
   return lengths[lengths.size() / 2];
 }
 
-/// Fills zones.support.offPlane (how far each labelled vertex lies from its
-/// own plane) and zones.support.sampleSpacing, which placement reads for the
-/// strict plane guard (SharpenOptions::maxSourceOffPlaneSpacings).
-/// \pre labelZoneVertices() ran.
+/// Fills zones.support.offPlane: how far each labelled vertex lies from its
+/// own plane, which placement reads for the strict plane guard
+/// (SharpenOptions::maxSourceOffPlaneSpacings). \pre labelZoneVertices() ran.
 template <class MeshType>
 void measureOffPlane(const MeshType &m, FeatureZones &zones) {
   auto &support = zones.support;
@@ -376,7 +375,6 @@ void measureOffPlane(const MeshType &m, FeatureZones &zones) {
     if (pl.normal.SquaredNorm() > 0)
       support.offPlane[v] = std::abs(pl.normal * (positionOf(&m.vert[v]) - pl.point));
   }
-  support.sampleSpacing = medianEdgeLength(m);
 }
 
 /// For every vertex with a plane, finds up to three other regions whose

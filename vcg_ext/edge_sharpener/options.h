@@ -81,6 +81,13 @@ struct SharpenOptions {
   /// longest edge: the tip of an acute edge (a 35-degree wedge) lies well
   /// beyond its chamfer, and the apex test below guards against far planes.
   double extendedEdgeLengthFactor = 2.0;
+  /// An inserted vertex stays at rest when the planes meet farther from it
+  /// than this many sample spacings (the input's median edge length): a
+  /// remesher's chamfer cuts a sample or two off a sharp edge (99.9% of the
+  /// benchmark's moves stay below 2), while the global edge-length check
+  /// lets a CAD mesh's long slivers throw vertices far away (twirl as is:
+  /// 31% of the diagonal without this bound). 0 disables.
+  double maxDisplacementSpacings = 2.5;
   /// An inserted vertex stays at rest when the planes meet more than this
   /// factor above its chamfer than their angle allows
   /// (geometry.h: chamferApexHeightRatio); 0 disables the test.

@@ -64,11 +64,12 @@ struct SupportPlanes {
   /// kNoVertex pads). Empty for the paper's method.
   static constexpr std::uint32_t kNoVertex = ~std::uint32_t(0);
   std::vector<std::array<std::uint32_t, 3>> nearby;
-  /// Extended method with the strict plane guard: each vertex's distance
-  /// from its own plane, and the input's sample spacing (median edge
-  /// length); empty / 0 otherwise.
-  std::vector<double> offPlane;
+  /// Extended method: the input's sample spacing (median edge length);
+  /// 0 for the paper's method.
   double sampleSpacing = 0;
+  /// Extended method with the strict plane guard: each vertex's distance
+  /// from its own plane; empty otherwise.
+  std::vector<double> offPlane;
 
   /// Extended method: n vertices with no plane and zero measures.
   void resetMeasured(std::size_t n) {
@@ -260,6 +261,9 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
           opt.apexHeightFactor)
         return Placement::FarFromChamfer;
   }
+  if (support.sampleSpacing > 0 && opt.maxDisplacementSpacings > 0 &&
+      (target - src.rest).Norm() > opt.maxDisplacementSpacings * support.sampleSpacing)
+    return Placement::FarFromChamfer;
   if (!support.offPlane.empty() && opt.maxSourceOffPlaneSpacings > 0) {
     // A source the plane does not describe: the planes' edge is not where
     // the samples around it put the surface (a blend, a facetted curve).

@@ -71,6 +71,7 @@ void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
     report.extended.zoneFaces += report.extended.returnedBorderFaces;
   }
   labelZoneVertices(m, vf, opt, zones, report.extended);
+  zones.support.sampleSpacing = medianEdgeLength(m);
   if (opt.maxSourceOffPlaneSpacings > 0) measureOffPlane(m, zones);
   report.filters = markZoneChamfers(m, labels, zones, opt.sameRegionFeatureAngleRad);
 }
