@@ -276,12 +276,18 @@ WORSE_CAUSES = {
         "paper's own limit: features hardly larger than the sample spacing. The Screened Poisson "
         "surface (depth 7) rounds the holes' rims off by 0.9% of the diagonal; the paper method "
         "moves 25 vertices there (at most 1.04 units, 55 kept by the convexity test) and the "
-        "farthest rim point of the reference moves from 0.917% to 0.937% away."),
+        "farthest rim point of the reference moves from 0.917% to 0.937% away. The bottom edges "
+        "of the plate are rounded (fillets of radius 6.35, 1.7 cells at 1%, in 15-degree "
+        "facets): the strict plane guard keeps the wall strip's tilted plane from acting where "
+        "its sources lie off it (0.5% is no longer worse with it), but at 1% the fillet's "
+        "samples lie on the two planes' extensions within 0.3 spacings and it squares the "
+        "fillet off (max 0.386 -> 0.823): the paper's small-radius-blend limit."),
     "fandisk": (
         "with CSG 1% (extended), the worst point (0.013, -0.928, -0.349) is where a face 0.05 "
         "wide (1.7 cells) at x = 0 meets the front face: the plane fitted to the narrow face and "
         "the front face's plane meet 0.96% of the diagonal from the reference's edge. Same limit "
-        "as plate_holes. IER 1% at multiplier 1.5 is not diagnosed yet."),
+        "as plate_holes; the strict plane guard keeps it at rest (max 0.471). IER 1% at "
+        "multiplier 1.5 is not diagnosed yet."),
     "octa-flower17k": (
         "with Screened Poisson (depth 7, cells of about 0.3 units), the worst points are inserted "
         "vertices at the petals' tips (x = 17.7): the reconstruction rounds each acute tip back "
