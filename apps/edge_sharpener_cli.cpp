@@ -173,8 +173,9 @@ int main(int argc, char **argv) {
       ->default_val(cli.extended.maxSupportSpreadRatio)
       ->check(CLI::Range(0.0, 10.0));
   app.add_flag("--strict", cli.strict,
-               "extended: strict plane guard (--border-turn 1 --max-off-plane 0.3): keeps blends "
-               "and finely facetted curves at rest; also keeps wide bevels of coarse remeshings");
+               "extended: strict plane guard (--border-turn 1 --max-off-plane 0.3, planes fitted "
+               "around the flat faces away from the zone): keeps blends and finely facetted "
+               "curves at rest; also keeps wide bevels of coarse remeshings");
   app.add_option("--border-turn", cli.borderTurnFactor,
                  "extended: return to the zone the region faces next to it that turn from their "
                  "region's plane by more than this multiple of the smooth threshold (0: off)")

@@ -410,3 +410,37 @@ TEST(Extended, TurnedBorderStripReturnsToTheZone) {
     }
   }
 }
+
+// The strict guard's seeded fit: a strip of chamfer faces (20 degrees) that
+// grew into a flat region tilts the plane fitted at its border, since the
+// trim (15 degrees) is centred on the tilted mean; centred on the faces that
+// touch no zone vertex, the trim drops the strip and the plane is exact.
+TEST(Extended, SeededFitIgnoresAnAbsorbedChamferStrip) {
+  es::Mesh m;
+  makeHeightField(m, kNx, kNy, kH, [](double x, double) { return flatThenStrip(x, 20.0); });
+  es::FeatureZones zones;
+  zones.faceRegion.assign(m.face.size(), es::kZone);
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    double cx = 0;
+    for (int k = 0; k < 3; ++k) cx += m.face[f].cP(k)[0] / 3.0;
+    if (cx < 1.1) zones.faceRegion[f] = 0;
+  }
+  const es::VertexFaceTable vf(m);
+  const std::vector<char> nearZone = es::verticesTouchingZone(m, vf, zones);
+  const std::size_t border = std::size_t(kNy / 2) * (kNx + 1) + 11;  // x = 1.1, middle row
+  ASSERT_TRUE(nearZone[border]);
+  std::vector<int> stamp(m.face.size(), -1);
+  es::SharpenOptions opt;
+  opt.method = es::Method::Extended;
+  const es::Vec3 up(0, 0, 1);
+
+  const es::RegionPlaneFit plain = es::fitRegionPlane(
+      m, vf, zones, border, 0, es::PlaneFitSettings::from(opt, nearZone), stamp, 0);
+  EXPECT_GT(es::angleBetween(plain.plane.normal, up), 5 * M_PI / 180);  // tilted by the strip
+
+  opt.setStrictPlaneGuard(true);
+  const es::RegionPlaneFit seeded = es::fitRegionPlane(
+      m, vf, zones, border, 0, es::PlaneFitSettings::from(opt, nearZone), stamp, 1);
+  EXPECT_LT(es::angleBetween(seeded.plane.normal, up), 1e-9);
+  EXPECT_NEAR(seeded.plane.point[2], 0.0, 1e-9);
+}

@@ -13,7 +13,7 @@
 - The extended method's reduction factors likewise: MeshLab UMR 1%: measured max x1.91 /
   RMS x8.45 over the same five shapes; project MC 1%: max x4.72 / RMS x9.71 over seven.
 - The extended method with the strict plane guard (--strict) likewise: UMR 1% max x1.91 /
-  RMS x8.41; project MC 1% max x3.74 / RMS x7.48 (the pyramid's acute base corners, whose
+  RMS x8.45; project MC 1% max x3.74 / RMS x7.47 (the pyramid's acute base corners, whose
   truncated tips lie off both flanks' planes, stay chamfered: x1.06 / x1.62).
 """
 import json

@@ -229,20 +229,53 @@ struct RegionPlaneFit {
   CrossScatter3 normalSelfScatter;  ///< area-weighted (normal - plane normal)(...)^T
 };
 
+/// How fitRegionPlane() fits: face rings, trim angle, and (strict plane
+/// guard) the seed away from the zone.
+struct PlaneFitSettings {
+  int rings = 2;         ///< SharpenOptions::supportRings
+  double trimRad = 0;    ///< SharpenOptions::fitTrimAngleRad
+  /// SharpenOptions::fitSeedFlatAngleRad (0: off); needs `nearZone`.
+  double seedFlatRad = 0;
+  /// Per vertex: 1 when it has a zone face; null when not seeding.
+  const std::vector<char> *nearZone = nullptr;
+
+  static PlaneFitSettings from(const SharpenOptions &opt, const std::vector<char> &nearZone) {
+    return {opt.supportRings, opt.fitTrimAngleRad, opt.fitSeedFlatAngleRad,
+            opt.fitSeedFlatAngleRad > 0 ? &nearZone : nullptr};
+  }
+};
+
+/// Per vertex: 1 when one of its faces is a zone face.
+template <class MeshType>
+std::vector<char> verticesTouchingZone(const MeshType &m, const VertexFaceTable &vf,
+                                       const FeatureZones &zones) {
+  std::vector<char> touches(m.vert.size(), 0);
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v) && !touches[v]; ++fi)
+      touches[v] = zones.faceRegion[*fi] == kZone;
+  return touches;
+}
+
 /// The plane of region `r` near vertex v: through the area-weighted centroid,
 /// and orthogonal to the area-weighted normal, of the region's faces within
-/// `rings` face rings of v (zero normal when v touches no face of r), refitted
-/// without the faces more than `trimRad` away from that normal (0: no
-/// refit), with the spread of the fitted faces around it (placement reads it
-/// to tell a curved region from a flat one).
+/// `s.rings` face rings of v (zero normal when v touches no face of r),
+/// refitted without the faces more than `s.trimRad` away from that normal (0:
+/// no refit), with the spread of the fitted faces around it (placement reads
+/// it to tell a curved region from a flat one). With `s.seedFlatRad`, the
+/// trim is centred on the mean normal of the fitted faces that touch no zone
+/// vertex when those turn by at most that angle: the faces next to the zone
+/// may be a strip of the chamfer the region absorbed.
 template <class MeshType>
 RegionPlaneFit fitRegionPlane(const MeshType &m, const VertexFaceTable &vf,
-                              const FeatureZones &zones, std::size_t v, int r, int rings,
-                              std::vector<int> &stamp, int stampValue, double trimRad) {
+                              const FeatureZones &zones, std::size_t v, int r,
+                              const PlaneFitSettings &s, std::vector<int> &stamp, int stampValue) {
   struct Fitted {
     Vec3 normal, centroid;
     double area;
+    bool awayFromZone;  ///< no vertex of the face touches the zone
   };
+  const int rings = s.rings;
+  const double trimRad = s.trimRad;
   std::vector<std::size_t> frontier{v}, next;
   std::vector<Fitted> faces;
   Vec3 normalSum(0, 0, 0), centroidSum(0, 0, 0);
@@ -258,7 +291,9 @@ RegionPlaneFit fitRegionPlane(const MeshType &m, const VertexFaceTable &vf,
         const Vec3 n = (p1 - p0) ^ (p2 - p0);  // twice the area times the unit normal
         const double area = n.Norm();
         normalSum += n;
-        if (area > 0) faces.push_back(Fitted{n / area, (p0 + p1 + p2) / 3.0, area});
+        bool away = s.nearZone != nullptr;
+        for (int k = 0; k < 3 && away; ++k) away = !(*s.nearZone)[vcg::tri::Index(m, f.cV(k))];
+        if (area > 0) faces.push_back(Fitted{n / area, (p0 + p1 + p2) / 3.0, area, away});
         centroidSum += (p0 + p1 + p2) * (area / 3.0);
         areaSum += area;
         for (int k = 0; k < 3; ++k) next.push_back(vcg::tri::Index(m, f.cV(k)));
@@ -270,6 +305,15 @@ RegionPlaneFit fitRegionPlane(const MeshType &m, const VertexFaceTable &vf,
   const double len = normalSum.Norm();
   if (!(areaSum > 0) || !(len > 0)) return fit;
   fit.plane = Plane{centroidSum / areaSum, normalSum / len};
+  if (s.seedFlatRad > 0) {
+    Vec3 awaySum(0, 0, 0);
+    for (const Fitted &f : faces)
+      if (f.awayFromZone) awaySum += f.normal * f.area;
+    bool flat = awaySum.Norm() > 0;
+    for (const Fitted &f : faces)
+      flat = flat && (!f.awayFromZone || angleBetween(awaySum, f.normal) <= s.seedFlatRad);
+    if (flat) fit.plane.normal = awaySum / awaySum.Norm();
+  }
   if (trimRad > 0) {
     // Refit without the faces that turn away from the dominant normal: the
     // border of a region often holds a few faces of the chamfer.
@@ -318,21 +362,20 @@ std::size_t returnTurnedBorderFaces(const MeshType &m, const MeshLabels<MeshType
   std::vector<int> stamp(m.face.size(), -1);
   int stampValue = 0;
   std::vector<int> regionsAtVertex;
+  const std::vector<char> touchesZone = verticesTouchingZone(m, vf, zones);
+  const PlaneFitSettings fitSettings = PlaneFitSettings::from(opt, touchesZone);
   for (std::size_t v = 0; v < m.vert.size(); ++v) {
+    if (!touchesZone[v]) continue;
     regionsAtVertex.clear();
-    bool touchesZone = false;
     for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
       const int r = zones.faceRegion[*fi];
-      if (r == kZone)
-        touchesZone = true;
-      else if (std::find(regionsAtVertex.begin(), regionsAtVertex.end(), r) ==
-               regionsAtVertex.end())
+      if (r != kZone && std::find(regionsAtVertex.begin(), regionsAtVertex.end(), r) ==
+                            regionsAtVertex.end())
         regionsAtVertex.push_back(r);
     }
-    if (!touchesZone) continue;
     for (const int r : regionsAtVertex) {
-      const RegionPlaneFit fit = fitRegionPlane(m, vf, zones, v, r, opt.supportRings, stamp,
-                                                stampValue++, opt.fitTrimAngleRad);
+      const RegionPlaneFit fit =
+          fitRegionPlane(m, vf, zones, v, r, fitSettings, stamp, stampValue++);
       if (fit.plane.normal.SquaredNorm() == 0) continue;
       for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
         if (zones.faceRegion[*fi] == r &&
@@ -434,14 +477,14 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
   zones.support.resetMeasured(nv);
   std::vector<int> stamp(m.face.size(), -1);
   int stampValue = 0;
-  std::vector<char> touchesZone(nv, 0);
+  const std::vector<char> touchesZone = verticesTouchingZone(m, vf, zones);
+  const PlaneFitSettings fitSettings = PlaneFitSettings::from(opt, touchesZone);
   for (std::size_t v = 0; v < nv; ++v) {
     int label = kZone;
     for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
       const int r = zones.faceRegion[*fi];
-      if (r == kZone)
-        touchesZone[v] = 1;
-      else if (label == kZone)
+      if (r == kZone) continue;
+      if (label == kZone)
         label = r;
       else if (label != r)
         label = kCrease;
@@ -453,8 +496,8 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
     zones.inRegion[v] = 1;
     zones.vertexLabel[v] = label;
     if (label >= 0 && touchesZone[v]) {
-      const RegionPlaneFit fit = fitRegionPlane(m, vf, zones, v, label, opt.supportRings, stamp,
-                                                stampValue++, opt.fitTrimAngleRad);
+      const RegionPlaneFit fit =
+          fitRegionPlane(m, vf, zones, v, label, fitSettings, stamp, stampValue++);
       zones.support.storeMeasured(v, fit);
     }
   }

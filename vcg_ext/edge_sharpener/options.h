@@ -141,14 +141,22 @@ struct SharpenOptions {
   /// keeps the wide bevels of coarse remeshings and the truncated tips of
   /// acute corners at rest, which is why it is not on by default.
   double maxSourceOffPlaneSpacings = 0.0;
+  /// A region's plane near the zone is trimmed around the mean normal of its
+  /// fitted faces that touch no zone vertex, when those turn by at most this
+  /// angle (radians; they are flat): the faces next to the zone may be a strip
+  /// of the chamfer the region absorbed (feature_zones.h: fitRegionPlane).
+  /// 0 disables (default); the strict setting is 4 degrees.
+  double fitSeedFlatAngleRad = 0.0;
 
-  /// The strict plane guard: both settings above at their strict values.
+  /// The strict plane guard: the three settings above at their strict values.
   void setStrictPlaneGuard(bool on) {
     borderTurnThresholdFactor = on ? kStrictBorderTurnThresholdFactor : 0.0;
     maxSourceOffPlaneSpacings = on ? kStrictMaxSourceOffPlaneSpacings : 0.0;
+    fitSeedFlatAngleRad = on ? kStrictFitSeedFlatAngleRad : 0.0;
   }
   static constexpr double kStrictBorderTurnThresholdFactor = 1.0;
   static constexpr double kStrictMaxSourceOffPlaneSpacings = 0.3;
+  static constexpr double kStrictFitSeedFlatAngleRad = 4.0 * M_PI / 180.0;
 
   /// Optional progress callback (percent, stage name); may be null.
   vcg::CallBackPos *progress = nullptr;
