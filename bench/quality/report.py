@@ -286,8 +286,13 @@ WORSE_CAUSES = {
         "with CSG 1% (extended), the worst point (0.013, -0.928, -0.349) is where a face 0.05 "
         "wide (1.7 cells) at x = 0 meets the front face: the plane fitted to the narrow face and "
         "the front face's plane meet 0.96% of the diagonal from the reference's edge. Same limit "
-        "as plate_holes; the strict plane guard keeps it at rest (max 0.471). IER 1% at "
-        "multiplier 1.5 is not diagnosed yet."),
+        "as plate_holes; the strict plane guard keeps it at rest (max 0.471). With IER 1% at "
+        "multiplier 1.5 the worst points (0.411, -0.998, 0.337) are a corner of the vertical "
+        "blend between the front and the side face (a cylinder of radius 0.1, 3.4 samples, in "
+        "22-degree facets): at the lower threshold every facet is zone, and the front, side and "
+        "back planes meet at the corner of the blend's bounding box, 1.25% of the diagonal "
+        "outside it (the paper's small-radius-blend limit); the strict plane guard keeps it "
+        "(max 0.558 at multiplier 1.5)."),
     "octa-flower17k": (
         "with Screened Poisson (depth 7, cells of about 0.3 units), the worst points are inserted "
         "vertices at the petals' tips (x = 17.7): the reconstruction rounds each acute tip back "
