@@ -3,6 +3,8 @@
 //                the unavoidable work, on the same mesh in the same binary
 //   core/F/T     edge_sharpener::sharpen() on a fresh copy, T OpenMP threads
 //                (counters: seconds per call between its progress callbacks)
+//   extended/F, strict/F  the same with the extended method (and its strict
+//                plane guard), all threads
 //   stages/F     the detection stages, split plan and subdivision one by one
 // Usage: edge-sharpener-bench --meshes=a.ply,b.ply [benchmark flags]
 // scripts/bench-performance.sh runs it and writes docs/performance.md.
@@ -148,12 +150,12 @@ void benchVcgTopology(benchmark::State &state, const std::string &path) {
   setCommonCounters(state, m);
 }
 
-void benchCore(benchmark::State &state, const std::string &path, int threads) {
+void benchCore(benchmark::State &state, const std::string &path, int threads,
+               es::SharpenOptions opt) {
   setThreads(threads);
   const es::Mesh &input = loadMesh(path);
   es::Mesh m;
   es::SharpenReport report;
-  es::SharpenOptions opt;
   opt.progress = recordLap;
   g_laps = ProgressLaps();
   for (auto _ : state) {
@@ -254,7 +256,16 @@ int main(int argc, char **argv) {
         ->Iterations(iterations);
     for (int t = 1; t <= hardwareThreads(); ++t)
       benchmark::RegisterBenchmark(("core/" + faces + "/threads:" + std::to_string(t)).c_str(),
-                                   benchCore, path, t)
+                                   benchCore, path, t, es::SharpenOptions{})
+          ->UseManualTime()
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(iterations);
+    es::SharpenOptions extended;
+    extended.method = es::Method::Extended;
+    es::SharpenOptions strict = extended;
+    strict.setStrictPlaneGuard(true);
+    for (const auto &[name, opt] : {std::pair{"extended/", extended}, std::pair{"strict/", strict}})
+      benchmark::RegisterBenchmark((name + faces).c_str(), benchCore, path, hardwareThreads(), opt)
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond)
           ->Iterations(iterations);

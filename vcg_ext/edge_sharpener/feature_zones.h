@@ -64,31 +64,40 @@ void forEachNeighbour(const MeshType &m, const VertexFaceTable &vf, std::size_t 
 template <class MeshType>
 void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceTable &vf,
                     int minDepth, FeatureZones &zones, ExtendedStats &stats) {
-  using FacePointer = typename MeshType::FacePointer;
   paintInteriorRedVertices(m, labels);
   paintCoreRedFaces(m, labels);
-  zones.faceRegion.assign(m.face.size(), kZone);
-  int regions = 0;
-  std::vector<FacePointer> stack;
-  for (auto &seed : m.face) {
-    if (seed.IsD() || labels.face[&seed] != FaceLabel::Red) continue;
-    if (zones.faceRegion[vcg::tri::Index(m, &seed)] != kZone) continue;
-    const int id = regions++;
-    zones.faceRegion[vcg::tri::Index(m, &seed)] = id;
-    stack.push_back(&seed);
-    while (!stack.empty()) {
-      FacePointer f = stack.back();
-      stack.pop_back();
-      for (int i = 0; i < 3; ++i) {
-        FacePointer g = f->FFp(i);
-        if (g == f || labels.edge[f][i] != EdgeLabel::Smooth) continue;
-        int &r = zones.faceRegion[vcg::tri::Index(m, g)];
-        if (r != kZone) continue;
-        r = id;
-        stack.push_back(g);
-      }
+  // Components of faces joined by smooth edges (union-find in face order:
+  // sequential, where a flood fill walks the faces at random);
+  // the components holding a core red face are the regions, numbered in the
+  // order of their first red face.
+  const std::size_t nf = m.face.size();
+  std::vector<std::uint32_t> parent(nf);
+  for (std::size_t f = 0; f < nf; ++f) parent[f] = std::uint32_t(f);
+  const auto find = [&parent](std::uint32_t f) {
+    while (parent[f] != f) f = parent[f] = parent[parent[f]];  // path halving
+    return f;
+  };
+  for (std::size_t fi = 0; fi < nf; ++fi) {
+    auto &f = m.face[fi];
+    if (f.IsD()) continue;
+    for (int i = 0; i < 3; ++i) {
+      const auto *g = f.cFFp(i);
+      if (g == &f || labels.edge[&f][i] != EdgeLabel::Smooth) continue;
+      const std::uint32_t a = find(std::uint32_t(fi));
+      const std::uint32_t b = find(std::uint32_t(vcg::tri::Index(m, g)));
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
   }
+  std::vector<int> regionOfRoot(nf, kZone);
+  int regions = 0;
+  for (std::size_t fi = 0; fi < nf; ++fi)
+    if (!m.face[fi].IsD() && labels.face[&m.face[fi]] == FaceLabel::Red) {
+      int &id = regionOfRoot[find(std::uint32_t(fi))];
+      if (id == kZone) id = regions++;
+    }
+  zones.faceRegion.assign(nf, kZone);
+  for (std::size_t fi = 0; fi < nf; ++fi)
+    if (!m.face[fi].IsD()) zones.faceRegion[fi] = regionOfRoot[find(std::uint32_t(fi))];
 
   // Depth of each region's vertices from the region's border, in hops.
   const std::size_t nv = m.vert.size();
@@ -117,6 +126,9 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
   while (!queue.empty()) {
     const std::size_t v = queue.front();
     queue.pop_front();
+    // Only whether a region reaches minDepth matters: the waves stop there
+    // instead of sweeping every region's interior.
+    if (depth[v] >= minDepth) continue;
     detail::forEachNeighbour(m, vf, v, [&](std::size_t u) {
       if (depth[u] >= 0 || vertexRegion[u] == kZone) return;
       depth[u] = depth[v] + 1;
@@ -392,15 +404,18 @@ std::size_t returnTurnedBorderFaces(const MeshType &m, const MeshLabels<MeshType
   return returned;
 }
 
-/// The input's sample spacing: the median length of its edges.
+/// The input's sample spacing: the median length of its edges (each edge
+/// once: taken from the face with the lower address, or from its only face).
+/// \pre FF adjacency.
 template <class MeshType>
 double medianEdgeLength(const MeshType &m) {
-  std::vector<double> lengths;
-  lengths.reserve(3 * m.face.size());
+  std::vector<float> lengths;
+  lengths.reserve(3 * m.face.size() / 2 + 16);
   for (const auto &f : m.face)
     if (!f.IsD())
       for (int i = 0; i < 3; ++i)
-        lengths.push_back((positionOf(f.cV(i)) - positionOf(f.cV((i + 1) % 3))).Norm());
+        if (f.cFFp(i) >= &f)
+          lengths.push_back(float((positionOf(f.cV(i)) - positionOf(f.cV((i + 1) % 3))).Norm()));
   if (lengths.empty()) return 0.0;
   std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
   return lengths[lengths.size() / 2];
