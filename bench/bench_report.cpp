@@ -127,6 +127,22 @@ int main(int argc, char **argv) {
        << cell(get("fast_ff")) << " | " << cell(get("vcg_ff")) << " |\n";
   }
 
+  md << "\n## Extended method\n\n"
+        "`sharpen()` with `--method extended` and with its strict plane guard (`--strict`), all "
+        "threads, against the same floor (issue 7: runtime within issue 5's targets):\n\n"
+        "| faces | floor (ms) | extended (ms) | extended/floor | strict (ms) | strict/floor |\n"
+        "|---:|---:|---:|---:|---:|---:|\n";
+  const auto familyMs = [&](const std::string &fam, long faces) {
+    return r.median.count(fam) && r.median.at(fam).count(faces) ? ms(r.median.at(fam).at(faces))
+                                                                : -1.0;
+  };
+  for (const auto &[faces, fb] : floor) {
+    const double f = ms(fb), e = familyMs("extended", faces), st = familyMs("strict", faces);
+    md << "| " << faces << " | " << cell(f) << " | " << cell(e) << " | "
+       << cell(e > 0 ? e / f : -1, "%.2f") << " | " << cell(st) << " | "
+       << cell(st > 0 ? st / f : -1, "%.2f") << " |\n";
+  }
+
   md << "\n## Stages\n\n"
         "Inside `sharpen()`, between its progress callbacks (2 threads when available; ms):\n\n"
         "| faces | input check + labels | normals/angles + smooth test | six filters + support "
@@ -223,6 +239,15 @@ int main(int argc, char **argv) {
     targets << "| core on ~1M faces at most 1.5x the floor | " << fmt("%.2f", c / f) << "x ("
             << fmt("%.0f", c) << " ms vs " << fmt("%.0f", f) << " ms, " << f1 << " faces) | "
             << met(c / f <= 1.5) << " |\n";
+  }
+  for (const auto &[fam, label] : {std::pair{"extended", "extended method"},
+                                    std::pair{"strict", "extended method, strict guard"}}) {
+    const long f1 = nearest(floor, 1e6);
+    const double f = ms(floor.at(f1)), e = familyMs(fam, f1);
+    if (e < 0) continue;
+    targets << "| " << label << " on ~1M faces at most 1.5x the floor (issue 7) | "
+            << fmt("%.2f", e / f) << "x (" << fmt("%.0f", e) << " ms) | " << met(e / f <= 1.5)
+            << " |\n";
   }
   {
     const long a = nearest(perFace, 1e5), b = nearest(perFace, 4e6);
