@@ -40,7 +40,8 @@ enum class Placement : std::uint8_t {
   EdgeTooLong,         ///< moving would create an edge longer than the input's longest
   MixedConvexity,      ///< chamfer bordered by a concave and a convex side
   DegenerateRevert,    ///< moved back by the degenerate-triangle cleanup
-  FarFromChamfer,      ///< extended method: the planes meet farther off than their angle allows
+  FarFromChamfer,      ///< extended method: the planes meet farther off than their angle
+                       ///< allows, or than maxDisplacementSpacings sample spacings
   CurvedSupport,       ///< extended method: the regions curve like a blend, not a sharp edge
   IntersectionRevert,  ///< moved back: a face of it intersected another face
   OffPlaneSource,      ///< extended method, strict guard: a source vertex lies off its plane
