@@ -56,9 +56,9 @@ void forEachNeighbour(const MeshType &m, const VertexFaceTable &vf, std::size_t 
 
 }  // namespace detail
 
-/// Splits the smooth part into regions: flood fills from the paper's core
-/// faces (filters 1-2) across smooth edges, one id per connected component,
-/// then returns to the zone every region thinner than `minDepth` hops
+/// Splits the smooth part into regions: the components of faces joined by
+/// smooth edges that hold one of the paper's core faces (filters 1-2), one id
+/// per component, then returns to the zone every region thinner than `minDepth` hops
 /// (a corridor of smooth triangles, e.g. a wide but regular chamfer band).
 /// \pre labelSmoothEdges() ran. Writes labels.vertex/face like filters 1-2.
 template <class MeshType>
