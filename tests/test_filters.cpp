@@ -1,5 +1,6 @@
 // The six filters, placement and its fallbacks on hand-built height fields
-// whose labels and exact results are known in closed form.
+// whose labels and exact results are known in closed form; the intersection
+// guard's broad phase on hand-placed triangles.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -35,8 +36,12 @@ constexpr int kNx = 20, kNy = 12;
 constexpr double kH = 0.1;
 constexpr double kRidgeX = 1.03;  // between grid columns 10 and 11
 
-double ridge(double x, double) { return 0.5 - 0.5 * std::abs(x - kRidgeX); }
-double valley(double x, double) { return 0.5 * std::abs(x - kRidgeX); }
+double ridge(double x, double) {
+  return 0.5 - 0.5 * std::abs(x - kRidgeX);
+}
+double valley(double x, double) {
+  return 0.5 * std::abs(x - kRidgeX);
+}
 
 /// True if every face lies on one side of x = kRidgeX (it does not cut
 /// across the crease) and all its vertices are on the exact surface.
@@ -57,7 +62,9 @@ double maxDeviationFromCrease(MeshType &m, double (*f)(double, double)) {
   return worst;
 }
 
-es::SharpenOptions defaults() { return {}; }
+es::SharpenOptions defaults() {
+  return {};
+}
 
 }  // namespace
 
@@ -124,7 +131,9 @@ TEST(Sharpen, DoublePrecisionMeshGivesTheSameResult) {
 namespace {
 // A step: two parallel slopes joined by a riser narrower than a cell. The
 // chamfer is bordered by a concave edge below and a convex edge above.
-double stepParallel(double x, double) { return x < kRidgeX ? 0.1 * x : 0.1 * x + 0.3; }
+double stepParallel(double x, double) {
+  return x < kRidgeX ? 0.1 * x : 0.1 * x + 0.3;
+}
 // Slopes that are not parallel, with the same step: the plane intersection
 // exists but lies far away, on the wrong side.
 double stepTilted(double x, double) {
@@ -337,8 +346,7 @@ TEST(Fallbacks, SourceOffItsPlaneKeepsVertexAtRest) {
   // Solid x, z <= 0: side A (x = 0) and top B (z = 0), chamfer from
   // (0, 0, -0.2) to (-0.2, 0, 0); the sharp edge is the y axis.
   es::SupportPlanes support;
-  support.plane = {Plane{Vec3(0, 0, -0.2), Vec3(1, 0, 0)},
-                   Plane{Vec3(-0.2, 0, 0), Vec3(0, 0, 1)}};
+  support.plane = {Plane{Vec3(0, 0, -0.2), Vec3(1, 0, 0)}, Plane{Vec3(-0.2, 0, 0), Vec3(0, 0, 1)}};
   support.offPlane = {0.0, 0.05};
   support.sampleSpacing = 0.1;
   es::InsertedVertexSource edge;
@@ -443,4 +451,34 @@ TEST(Extended, SeededFitIgnoresAnAbsorbedChamferStrip) {
       m, vf, zones, border, 0, es::PlaneFitSettings::from(opt, nearZone), stamp, 1);
   EXPECT_LT(es::angleBetween(seeded.plane.normal, up), 1e-9);
   EXPECT_NEAR(seeded.plane.point[2], 0.0, 1e-9);
+}
+
+// The intersection guard's broad phase: a hashed grid over the query boxes.
+// A face in the last, partial grid cell of the boxes' bounds must still be
+// found (it was taken for outside the bounds, and its intersections missed).
+TEST(IntersectionGuard, BoxOverlapFindsFacesInTheLastPartialCell) {
+  es::Mesh m;
+  using Alloc = vcg::tri::Allocator<es::Mesh>;
+  using Coord = es::Mesh::CoordType;
+  const auto addTriangle = [&](Coord a, Coord b, Coord c) {
+    auto v = Alloc::AddVertices(m, 3);
+    v[0].P() = a, v[1].P() = b, v[2].P() = c;
+    Alloc::AddFace(m, &*v, &*(v + 1), &*(v + 2));
+  };
+  addTriangle({2.2f, 0.5f, 0.5f}, {2.4f, 0.5f, 0.5f},
+              {2.3f, 0.6f, 0.5f});  // in box 1, x cell 2.2-2.4 of 2.5
+  addTriangle({0.2f, 0.2f, 0.2f}, {0.4f, 0.2f, 0.2f}, {0.3f, 0.4f, 0.2f});  // in box 0
+  addTriangle({5.0f, 0.5f, 0.5f}, {5.2f, 0.5f, 0.5f}, {5.1f, 0.6f, 0.5f});  // far from both
+  // Two unit boxes: grid cell 1, bounds 2.5 cells long in x.
+  std::vector<es::detail::FaceBox> boxes(2);
+  for (int c = 0; c < 3; ++c) boxes[0].lo[c] = 0, boxes[0].hi[c] = 1;
+  boxes[1] = boxes[0];
+  boxes[1].lo[0] = 1.5, boxes[1].hi[0] = 2.5;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> hits;
+  es::detail::forEachBoxOverlap(
+      m, boxes, [&](std::size_t v) { return es::detail::FaceBox(es::positionOf(&m.vert[v])); },
+      [&](int, std::uint32_t box, std::uint32_t face) { hits.emplace_back(box, face); });
+  std::sort(hits.begin(), hits.end());
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>> expected{{0, 1}, {1, 0}};
+  EXPECT_EQ(hits, expected);
 }

@@ -13,9 +13,13 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
-Vec3 unit(Vec3 v) { return v / v.Norm(); }
+Vec3 unit(Vec3 v) {
+  return v / v.Norm();
+}
 
-double planeOffset(const Plane &p, const Vec3 &x) { return p.normal * (x - p.point); }
+double planeOffset(const Plane &p, const Vec3 &x) {
+  return p.normal * (x - p.point);
+}
 
 }  // namespace
 
@@ -50,7 +54,8 @@ TEST(PlanePairLine, RandomPlanesGiveExactClosestPoint) {
 
 TEST(PlanePairLine, ParallelPlanesWithinToleranceAreRejected) {
   const Plane p{Vec3(0, 0, 0), Vec3(0, 0, 1)};
-  const Plane nearlyParallel{Vec3(1, 0, 0), unit(Vec3(std::sin(0.5 * kDeg), 0, std::cos(0.5 * kDeg)))};
+  const Plane nearlyParallel{Vec3(1, 0, 0),
+                             unit(Vec3(std::sin(0.5 * kDeg), 0, std::cos(0.5 * kDeg)))};
   const Plane tilted{Vec3(1, 0, 0), unit(Vec3(std::sin(2 * kDeg), 0, std::cos(2 * kDeg)))};
   EXPECT_FALSE(es::closestPointOnPlanePairLine(p, nearlyParallel, Vec3(0, 0, 0), 1 * kDeg));
   EXPECT_TRUE(es::closestPointOnPlanePairLine(p, tilted, Vec3(0, 0, 0), 1 * kDeg));
@@ -132,8 +137,8 @@ TEST(TriangleAngles, EquilateralAndDegenerate) {
   const Vec3 a(0, 0, 0), b(1, 0, 0), c(0.5, std::sqrt(3.0) / 2, 0);
   EXPECT_NEAR(es::minTriangleAngle(a, b, c), 60 * kDeg, 1e-12);
   EXPECT_NEAR(es::maxTriangleAngle(a, b, c), 60 * kDeg, 1e-12);
-  EXPECT_EQ(es::minTriangleAngle(a, b, Vec3(2, 0, 0)), 0.0);        // collinear
-  EXPECT_EQ(es::minTriangleAngle(a, a, c), 0.0);                    // repeated vertex
+  EXPECT_EQ(es::minTriangleAngle(a, b, Vec3(2, 0, 0)), 0.0);  // collinear
+  EXPECT_EQ(es::minTriangleAngle(a, a, c), 0.0);              // repeated vertex
   EXPECT_NEAR(es::maxTriangleAngle(a, Vec3(2, 0, 0), b), M_PI, 1e-12);
   EXPECT_NEAR(es::cornerAngle(a, b, Vec3(0, 1, 0)), 90 * kDeg, 1e-12);
 }
@@ -228,4 +233,30 @@ TEST(Bend, FitQualityTellsACurveFromStaircaseNoise) {
   EXPECT_EQ(es::curveFitQuality(es::CrossScatter3{}, es::CrossScatter3{}, es::CrossScatter3{},
                                 Vec3(1, 0, 0)),
             0.0);
+}
+
+TEST(TrianglesApart, CoplanarNeighboursATenthApartAreApart) {
+  // Two faces of one sharpened flank (z = 0.5 - 0.5 (x - 1.03)); vcglib's
+  // Moeller test reports them as intersecting in double precision.
+  const std::array<Vec3, 3> a{Vec3(1.03, 0.55, 0.5), Vec3(1.1, 0.6, 0.465), Vec3(1.03, 0.6, 0.5)};
+  const std::array<Vec3, 3> b{Vec3(1.1, 0.5, 0.465), Vec3(1.2, 0.5, 0.415), Vec3(1.2, 0.6, 0.415)};
+  EXPECT_TRUE(es::trianglesApart(a, b));
+  EXPECT_TRUE(es::trianglesApart(b, a));
+}
+
+TEST(TrianglesApart, CrossingOverlappingAndTouchingAreNotApart) {
+  const std::array<Vec3, 3> flat{Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0)};
+  // Pierces the flat triangle.
+  const std::array<Vec3, 3> crossing{Vec3(0.5, 0.5, -1), Vec3(0.5, 0.5, 1), Vec3(0.6, 0.4, 1)};
+  // Coplanar, overlapping.
+  const std::array<Vec3, 3> overlapping{Vec3(0.5, 0.5, 0), Vec3(3, 0.5, 0), Vec3(0.5, 3, 0)};
+  // A vertex resting on the flat triangle's hypotenuse.
+  const std::array<Vec3, 3> touching{Vec3(1, 1, 0), Vec3(2, 2, 1), Vec3(2, 1, 1)};
+  // Parallel, 0.01 above.
+  const std::array<Vec3, 3> above{Vec3(0, 0, 0.01), Vec3(2, 0, 0.01), Vec3(0, 2, 0.01)};
+  EXPECT_FALSE(es::trianglesApart(flat, crossing));
+  EXPECT_FALSE(es::trianglesApart(flat, overlapping));
+  EXPECT_FALSE(es::trianglesApart(flat, touching));
+  EXPECT_FALSE(es::trianglesApart(touching, flat));
+  EXPECT_TRUE(es::trianglesApart(flat, above));
 }

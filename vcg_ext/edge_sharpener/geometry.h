@@ -202,4 +202,39 @@ inline double cornerAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
   return angleBetween(b - a, c - a);
 }
 
+/// Whether triangles p and q are apart by a visible gap along one of the
+/// separating-axis theorem's axes: the two normals, the nine cross products
+/// of their edges, each normal crossed with the edges of its own triangle
+/// (for coplanar triangles) and the coordinate axes (for degenerate ones). A gap must exceed 1e-9
+/// of the pair's size, so triangles that touch are never called apart. (vcglib's Moeller test can
+/// report two coplanar triangles a tenth of their size apart as intersecting; this test lets them
+/// go first.)
+inline bool trianglesApart(const std::array<Vec3, 3> &p, const std::array<Vec3, 3> &q) {
+  double size = 0;
+  for (const auto *t : {&p, &q})
+    for (int k = 0; k < 3; ++k) size = std::max(size, ((*t)[k] - (*t)[(k + 1) % 3]).Norm());
+  for (int k = 0; k < 3; ++k) size = std::max(size, (p[k] - q[k]).Norm());
+  const auto apartAlong = [&](const Vec3 &axis) {
+    const double gap = 1e-9 * size * axis.Norm();
+    double pLo = p[0] * axis, pHi = pLo, qLo = q[0] * axis, qHi = qLo;
+    for (int k = 1; k < 3; ++k) {
+      pLo = std::min(pLo, p[k] * axis), pHi = std::max(pHi, p[k] * axis);
+      qLo = std::min(qLo, q[k] * axis), qHi = std::max(qHi, q[k] * axis);
+    }
+    return pHi + gap < qLo || qHi + gap < pLo;
+  };
+  std::array<Vec3, 3> pe, qe;
+  for (int k = 0; k < 3; ++k) pe[k] = p[(k + 1) % 3] - p[k], qe[k] = q[(k + 1) % 3] - q[k];
+  const Vec3 pn = pe[0] ^ pe[1], qn = qe[0] ^ qe[1];
+  if (apartAlong(Vec3(1, 0, 0)) || apartAlong(Vec3(0, 1, 0)) || apartAlong(Vec3(0, 0, 1)))
+    return true;
+  if (apartAlong(pn) || apartAlong(qn)) return true;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (apartAlong(pe[i] ^ qe[j])) return true;
+  for (int k = 0; k < 3; ++k)
+    if (apartAlong(pn ^ pe[k]) || apartAlong(qn ^ qe[k])) return true;
+  return false;
+}
+
 }  // namespace edge_sharpener

@@ -8,9 +8,11 @@
 // position on the input surface, repeating on the faces it changed until no
 // such intersection is left.
 //
-// Cost: one pass over all faces per round against a hashed grid of the faces
-// that changed (the first round: the faces of moved vertices), so near-linear
-// in the mesh size; later rounds only look at the faces of reverted vertices.
+// Cost: one pass over all faces against a hashed grid of the boxes the
+// faces of moved vertices sweep on their way back to rest, so near-linear in
+// the mesh size; the rounds then test only the face pairs this pass found
+// (the first round: all of them; later rounds: those of the faces of
+// vertices that retreated).
 #pragma once
 
 #include <vcg/complex/complex.h>
@@ -65,6 +67,14 @@ struct FaceBox {
     }
   }
   FaceBox() = default;
+  /// The box of one point.
+  explicit FaceBox(const Vec3 &p) {
+    for (int c = 0; c < 3; ++c) lo[c] = hi[c] = p[c];
+  }
+  /// Grows this box to hold `b`.
+  void unite(const FaceBox &b) {
+    for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], b.lo[c]), hi[c] = std::max(hi[c], b.hi[c]);
+  }
   bool overlaps(const FaceBox &b) const {
     for (int c = 0; c < 3; ++c)
       if (lo[c] > b.hi[c] || b.lo[c] > hi[c]) return false;
@@ -77,7 +87,8 @@ struct FaceBox {
 /// the coordinates in double precision. Faces sharing an edge are not tested;
 /// faces sharing one vertex intersect when the edge opposite the shared
 /// vertex in one, pulled halfway towards it, crosses the other; other faces
-/// by Moeller's triangle-triangle test, touching included. (In float,
+/// by Moeller's triangle-triangle test, touching included, unless
+/// trianglesApart() finds a gap between them. (In float,
 /// Moeller's test reports nearly coplanar faces millimetres apart as
 /// intersecting: its interval arithmetic divides by the tiny distances to
 /// the other face's plane.)
@@ -88,7 +99,10 @@ bool facesIntersect(FaceType *f, FaceType *g) {
   if (shared == 3) return true;
   Vec3 p[3], q[3];
   for (int k = 0; k < 3; ++k) p[k] = positionOf(f->cV(k)), q[k] = positionOf(g->cV(k));
-  if (shared == 0) return vcg::NoDivTriTriIsect(p[0], p[1], p[2], q[0], q[1], q[2]);
+  if (shared == 0) {
+    if (trianglesApart({p[0], p[1], p[2]}, {q[0], q[1], q[2]})) return false;
+    return vcg::NoDivTriTriIsect(p[0], p[1], p[2], q[0], q[1], q[2]);
+  }
   int i0 = 0, i1 = 0;
   vcg::face::FindSharedVertex(f, g, i0, i1);
   // As vcglib: the first segment that meets the other face decides.
@@ -106,13 +120,16 @@ bool facesIntersect(FaceType *f, FaceType *g) {
   return false;
 }
 
-/// Calls visit(slot, gi) for every face gi of the mesh whose bounding box
+/// Calls visit(thread, slot, gi) for every face gi of the mesh whose box
 /// overlaps boxes[slot] (once per pair), through a hashed grid of `boxes`
-/// and one pass over the faces that reads only per-vertex cell indices
+/// and one pass over the faces that reads only per-vertex cell ranges
 /// (computed once per vertex): near-linear in the mesh size, and cheap for
-/// the faces far from every box.
-template <class MeshType, class Visit>
-void forEachBoxOverlap(const MeshType &m, const std::vector<FaceBox> &boxes, Visit &&visit) {
+/// the faces far from every box. A face's box is the union of
+/// vertexBox(v) over its vertices v (a vertex's position, or the segment it
+/// may move along).
+template <class MeshType, class VertexBox, class Visit>
+void forEachBoxOverlap(const MeshType &m, const std::vector<FaceBox> &boxes, VertexBox &&vertexBox,
+                       Visit &&visit) {
   if (boxes.empty()) return;
   FaceBox all = boxes[0];
   double extentSum = 0;
@@ -131,14 +148,19 @@ void forEachBoxOverlap(const MeshType &m, const std::vector<FaceBox> &boxes, Vis
   double cell = std::max(extentSum / double(boxes.size()), span / double(1 << 20));
   if (!(cell > 0) || !std::isfinite(cell)) cell = 1;
   const double inv = 1.0 / cell;
+  double top[3];         // extent of `all` in cells
   std::int32_t last[3];  // largest cell index inside `all`
-  for (int c = 0; c < 3; ++c)
-    last[c] = std::int32_t(std::min((all.hi[c] - all.lo[c]) * inv, double(1 << 20)));
+  for (int c = 0; c < 3; ++c) {
+    top[c] = std::min((all.hi[c] - all.lo[c]) * inv, double(1 << 20));
+    last[c] = std::int32_t(top[c]);
+  }
   // Cell index along axis c; -1 / last + 1 outside `all` (and for NaN: -1).
+  // (Outside means beyond `top`, not beyond `last`: a point in the last,
+  // partial cell is inside.)
   const auto cellOf = [&](double x, int c) -> std::int32_t {
     const double t = (x - all.lo[c]) * inv;
     if (!(t >= 0)) return -1;
-    return t > last[c] ? last[c] + 1 : std::int32_t(t);
+    return t > top[c] ? last[c] + 1 : std::min(std::int32_t(t), last[c]);
   };
   const auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
     return std::uint64_t(x) | std::uint64_t(y) << 21 | std::uint64_t(z) << 42;
@@ -184,10 +206,14 @@ void forEachBoxOverlap(const MeshType &m, const std::vector<FaceBox> &boxes, Vis
   for (std::size_t e = 0; e < entries.size(); ++e)
     if (e == 0 || entries[e].first != entries[e - 1].first)
       table[slotOfKey(entries[e].first)] = {entries[e].first, std::uint32_t(e)};
-  std::vector<std::int32_t> vertexCell(3 * m.vert.size(), -1);
+  // Per vertex: lowest cells on the three axes, then highest.
+  std::vector<std::int32_t> vertexCell(6 * m.vert.size(), -1);
   for (std::size_t v = 0; v < m.vert.size(); ++v)
-    if (!m.vert[v].IsD())
-      for (int c = 0; c < 3; ++c) vertexCell[3 * v + c] = cellOf(double(m.vert[v].cP()[c]), c);
+    if (!m.vert[v].IsD()) {
+      const FaceBox b = vertexBox(v);
+      for (int c = 0; c < 3; ++c)
+        vertexCell[6 * v + c] = cellOf(b.lo[c], c), vertexCell[6 * v + 3 + c] = cellOf(b.hi[c], c);
+    }
 
   // The pass over the faces runs on every core; each thread keeps its own
   // once-per-pair stamps and tells `visit` its number.
@@ -207,19 +233,23 @@ void forEachBoxOverlap(const MeshType &m, const std::vector<FaceBox> &boxes, Vis
     const auto test = [&](std::uint32_t q) {
       if (stamp[q] == gi) return;
       stamp[q] = std::uint32_t(gi);
-      if (!haveBox) gb = FaceBox(g), haveBox = true;
+      if (!haveBox) {
+        gb = vertexBox(vcg::tri::Index(m, g.cV(0)));
+        for (int k = 1; k < 3; ++k) gb.unite(vertexBox(vcg::tri::Index(m, g.cV(k))));
+        haveBox = true;
+      }
       if (gb.overlaps(boxes[q])) visit(thread, q, std::uint32_t(gi));
     };
     for (const std::uint32_t q : oversized) test(q);
     std::int32_t lo[3], hi[3];
     std::int64_t cells = 1;
     bool outside = false;
-    const std::int32_t *c0 = &vertexCell[3 * vcg::tri::Index(m, g.cV(0))];
-    const std::int32_t *c1 = &vertexCell[3 * vcg::tri::Index(m, g.cV(1))];
-    const std::int32_t *c2 = &vertexCell[3 * vcg::tri::Index(m, g.cV(2))];
+    const std::int32_t *c0 = &vertexCell[6 * vcg::tri::Index(m, g.cV(0))];
+    const std::int32_t *c1 = &vertexCell[6 * vcg::tri::Index(m, g.cV(1))];
+    const std::int32_t *c2 = &vertexCell[6 * vcg::tri::Index(m, g.cV(2))];
     for (int c = 0; c < 3; ++c) {
       lo[c] = std::max(std::min({c0[c], c1[c], c2[c]}), 0);
-      hi[c] = std::min(std::max({c0[c], c1[c], c2[c]}), last[c]);
+      hi[c] = std::min(std::max({c0[3 + c], c1[3 + c], c2[3 + c]}), last[c]);
       outside |= lo[c] > hi[c];
       cells *= std::int64_t(hi[c]) - lo[c] + 1;
     }
@@ -239,30 +269,6 @@ void forEachBoxOverlap(const MeshType &m, const std::vector<FaceBox> &boxes, Vis
             test(entries[e].second);
         }
   }
-}
-
-/// Pairs of intersecting faces with at least one face in `query` (face
-/// indices), smaller index first, sorted and unique.
-template <class MeshType>
-std::vector<std::pair<std::uint32_t, std::uint32_t>> findIntersectingPairs(
-    MeshType &m, const std::vector<std::uint32_t> &query) {
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(maxThreads());
-  std::vector<FaceBox> boxes;
-  boxes.reserve(query.size());
-  for (const std::uint32_t fi : query) boxes.emplace_back(m.face[fi]);
-  std::vector<char> isQuery(m.face.size(), 0);
-  for (const std::uint32_t fi : query) isQuery[fi] = 1;
-  forEachBoxOverlap(m, boxes, [&](int thread, std::uint32_t q, std::uint32_t gi) {
-    const std::uint32_t qi = query[q];
-    if (qi == gi || (isQuery[gi] && gi < qi)) return;  // a pair of query faces: tested once
-    const std::uint32_t a = std::min(qi, gi), b = std::max(qi, gi);
-    if (facesIntersect<MeshType>(&m.face[a], &m.face[b])) found[thread].emplace_back(a, b);
-  });
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  for (const auto &list : found) pairs.insert(pairs.end(), list.begin(), list.end());
-  std::sort(pairs.begin(), pairs.end());  // whatever the thread count: same order
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  return pairs;
 }
 
 }  // namespace detail
@@ -343,6 +349,60 @@ IntersectionStats revertSelfIntersections(
   const auto restOf = [&](std::size_t v) {
     return v >= n0 ? Coord::Construct(plan.inserted[v - n0].rest) : originalRest[v];
   };
+  // Moved vertices only ever go back along the segment to rest, so a face
+  // can only meet the faces its swept box (placed and rest positions of its
+  // vertices) overlaps: one pass over the mesh finds them for all rounds.
+  const std::vector<std::vector<std::uint32_t>> nearOfQuery = [&] {
+    std::vector<detail::FaceBox> boxes;
+    boxes.reserve(query.size());
+    const auto sweptBox = [&](std::size_t v) {
+      detail::FaceBox b(positionOf(&m.vert[v]));
+      if (moved[v]) b.unite(detail::FaceBox(Vec3::Construct(restOf(v))));
+      return b;
+    };
+    for (const std::uint32_t fi : query) {
+      detail::FaceBox b = sweptBox(vcg::tri::Index(m, m.face[fi].cV(0)));
+      for (int k = 1; k < 3; ++k) b.unite(sweptBox(vcg::tri::Index(m, m.face[fi].cV(k))));
+      boxes.push_back(b);
+    }
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> hits(detail::maxThreads());
+    detail::forEachBoxOverlap(m, boxes, sweptBox,
+                              [&](int thread, std::uint32_t q, std::uint32_t gi) {
+                                if (gi != query[q]) hits[thread].emplace_back(q, gi);
+                              });
+    std::vector<std::vector<std::uint32_t>> near(query.size());
+    for (const auto &list : hits)
+      for (const auto &[q, gi] : list) near[q].push_back(gi);
+    for (auto &list : near) std::sort(list.begin(), list.end());  // any thread count: same lists
+    return near;
+  }();
+  // Slot of each face of a moved vertex in nearOfQuery.
+  std::vector<std::uint32_t> querySlot(m.face.size(), 0);
+  for (std::size_t q = 0; q < query.size(); ++q) querySlot[query[q]] = std::uint32_t(q);
+  // Pairs of intersecting faces with at least one face in `faces` (faces of
+  // moved vertices), smaller index first, sorted and unique.
+  std::vector<char> inRound(m.face.size(), 0);
+  const auto intersectingPairs = [&](const std::vector<std::uint32_t> &faces) {
+    for (const std::uint32_t fi : faces) inRound[fi] = 1;
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(detail::maxThreads());
+    const std::int64_t count = std::int64_t(faces.size());
+#pragma omp parallel for schedule(dynamic, 64) if (count >= 4096)
+    for (std::int64_t r = 0; r < count; ++r) {
+      const std::uint32_t fi = faces[r];
+      for (const std::uint32_t gi : nearOfQuery[querySlot[fi]]) {
+        if (inRound[gi] && gi < fi) continue;  // a pair of this round's faces: tested once
+        const std::uint32_t a = std::min(fi, gi), b = std::max(fi, gi);
+        if (detail::facesIntersect<MeshType>(&m.face[a], &m.face[b]))
+          found[detail::threadNumber()].emplace_back(a, b);
+      }
+    }
+    for (const std::uint32_t fi : faces) inRound[fi] = 0;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    for (const auto &list : found) pairs.insert(pairs.end(), list.begin(), list.end());
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    return pairs;
+  };
   // Position of each moved vertex as placed, and how far along it still is,
   // in steps of 1/kFull of its displacement (kFull: all the way).
   constexpr int kFull = 16;
@@ -399,34 +459,17 @@ IntersectionStats revertSelfIntersections(
       }
     }
   };
-  // Faces near each vertex of `vertices`: near its faces anywhere on its way back to rest.
+  // Faces near each vertex of `vertices`: those its faces may meet on its way back to rest.
   const auto gatherNear = [&](const std::vector<std::uint32_t> &vertices) {
-    std::vector<detail::FaceBox> boxes;
-    std::vector<std::uint32_t> owner;
+    std::vector<std::vector<std::uint32_t>> near(vertices.size());
     for (std::size_t r = 0; r < vertices.size(); ++r) {
       const std::size_t v = vertices[r];
-      const Coord now = m.vert[v].cP();
       for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
-        detail::FaceBox b(m.face[incident[j]]);
-        m.vert[v].P() = restOf(v);
-        const detail::FaceBox atRest(m.face[incident[j]]);
-        m.vert[v].P() = now;
-        for (int c = 0; c < 3; ++c)
-          b.lo[c] = std::min(b.lo[c], atRest.lo[c]), b.hi[c] = std::max(b.hi[c], atRest.hi[c]);
-        boxes.push_back(b);
-        owner.push_back(std::uint32_t(r));
+        const auto &list = nearOfQuery[querySlot[incident[j]]];
+        near[r].insert(near[r].end(), list.begin(), list.end());
       }
-    }
-    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> hits(detail::maxThreads());
-    detail::forEachBoxOverlap(m, boxes, [&](int thread, std::uint32_t q, std::uint32_t gi) {
-      hits[thread].emplace_back(owner[q], gi);
-    });
-    std::vector<std::vector<std::uint32_t>> near(vertices.size());
-    for (const auto &list : hits)
-      for (const auto &[r, gi] : list) near[r].push_back(gi);
-    for (auto &list : near) {  // sorted: the same whatever the thread count
-      std::sort(list.begin(), list.end());
-      list.erase(std::unique(list.begin(), list.end()), list.end());
+      std::sort(near[r].begin(), near[r].end());
+      near[r].erase(std::unique(near[r].begin(), near[r].end()), near[r].end());
     }
     return near;
   };
@@ -460,7 +503,7 @@ IntersectionStats revertSelfIntersections(
   std::vector<std::pair<std::uint32_t, std::uint32_t>> unfixable;
   constexpr int kMaxRounds = 1000;
   for (int round = 0; round < kMaxRounds && !query.empty(); ++round) {
-    const auto pairs = detail::findIntersectingPairs(m, query);
+    const auto pairs = intersectingPairs(query);
     if (round == 0) s.intersectingPairs = pairs.size();
     if (pairs.empty()) break;
     ++s.rounds;
