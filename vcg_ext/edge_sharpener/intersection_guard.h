@@ -91,14 +91,15 @@ struct FaceBox {
 /// trianglesApart() finds a gap between them. (In float,
 /// Moeller's test reports nearly coplanar faces millimetres apart as
 /// intersecting: its interval arithmetic divides by the tiny distances to
-/// the other face's plane.)
-template <class MeshType, class FaceType = typename MeshType::FaceType>
-bool facesIntersect(FaceType *f, FaceType *g) {
+/// the other face's plane.) `position(vertex pointer)` gives the
+/// coordinates to test at (default: where the vertices are).
+template <class MeshType, class FaceType = typename MeshType::FaceType, class Position>
+bool facesIntersect(FaceType *f, FaceType *g, Position &&position) {
   const int shared = vcg::face::CountSharedVertex(f, g);
   if (shared == 2) return false;
   if (shared == 3) return true;
   Vec3 p[3], q[3];
-  for (int k = 0; k < 3; ++k) p[k] = positionOf(f->cV(k)), q[k] = positionOf(g->cV(k));
+  for (int k = 0; k < 3; ++k) p[k] = position(f->cV(k)), q[k] = position(g->cV(k));
   if (shared == 0) {
     if (trianglesApart({p[0], p[1], p[2]}, {q[0], q[1], q[2]})) return false;
     return vcg::NoDivTriTriIsect(p[0], p[1], p[2], q[0], q[1], q[2]);
@@ -118,6 +119,27 @@ bool facesIntersect(FaceType *f, FaceType *g) {
     }
   }
   return false;
+}
+
+template <class MeshType, class FaceType = typename MeshType::FaceType>
+bool facesIntersect(FaceType *f, FaceType *g) {
+  return facesIntersect<MeshType>(f, g, [](const auto *v) { return positionOf(v); });
+}
+
+/// Whether two faces cross rather than only touch: they still meet when
+/// each shrinks towards its centroid by 1e-6 of its size (faces sharing a
+/// vertex then share none).
+template <class MeshType, class FaceType = typename MeshType::FaceType, class Position>
+bool facesCross(FaceType *f, FaceType *g, Position &&position) {
+  std::array<Vec3, 3> p, q;
+  const auto shrink = [&](FaceType *face, std::array<Vec3, 3> &t) {
+    for (int k = 0; k < 3; ++k) t[k] = position(face->cV(k));
+    const Vec3 centroid = (t[0] + t[1] + t[2]) / 3.0;
+    for (Vec3 &x : t) x = centroid + (x - centroid) * (1 - 1e-6);
+  };
+  shrink(f, p);
+  shrink(g, q);
+  return !trianglesApart(p, q) && vcg::NoDivTriTriIsect(p[0], p[1], p[2], q[0], q[1], q[2]);
 }
 
 /// Calls visit(thread, slot, gi) for every face gi of the mesh whose box
@@ -294,10 +316,14 @@ std::vector<typename MeshType::CoordType> positionsBeforeProjection(const MeshTy
 /// (Placement::Moved), or an original vertex whose position differs from
 /// `originalRest` (extended method: a projected zone vertex).
 ///
-/// Each round finds the intersecting pairs among the faces that changed.
+/// Each round finds the intersecting pairs among the faces that changed,
+/// leaving alone those that also meet with every vertex at rest (in the
+/// input: moving back would not resolve them; counted in `remaining`),
+/// unless they only touched at rest and now cross (facesCross()).
 /// Each pair retreats one moved vertex of its two faces along the segment to
 /// its rest position: to the farthest multiple of 1/16 of its displacement
-/// at which none of its faces intersects a face nearby, folds over (normal
+/// at which none of its faces intersects a face nearby (as above: where they
+/// do not at rest), folds over (normal
 /// turned against the one at rest) or gets an angle below
 /// `degenerateAngleRad`; else to rest. Of the pair's moved vertices, the one
 /// that can stay farthest out retreats (ties: the one in more pairs, then
@@ -349,6 +375,25 @@ IntersectionStats revertSelfIntersections(
   const auto restOf = [&](std::size_t v) {
     return v >= n0 ? Coord::Construct(plan.inserted[v - n0].rest) : originalRest[v];
   };
+  // Where every vertex was before sharpening moved it.
+  const auto restPosition = [&](const auto *vp) {
+    const std::size_t v = vcg::tri::Index(m, vp);
+    return v >= n0 || !originalRest.empty() ? Vec3::Construct(restOf(v)) : positionOf(vp);
+  };
+  // How two faces meet: not at all, in a contact sharpening made, or in one
+  // that is there at rest too (in the input: moving back would not resolve
+  // it) — unless the faces only touched at rest and now cross.
+  enum class Contact { None, New, AtRest };
+  const auto contactOf = [&](std::uint32_t fi, std::uint32_t gi) {
+    auto *f = &m.face[std::min(fi, gi)], *g = &m.face[std::max(fi, gi)];
+    const auto here = [](const auto *vp) { return positionOf(vp); };
+    if (!detail::facesIntersect<MeshType>(f, g, here)) return Contact::None;
+    if (!detail::facesIntersect<MeshType>(f, g, restPosition)) return Contact::New;
+    return detail::facesCross<MeshType>(f, g, restPosition) ||
+                   !detail::facesCross<MeshType>(f, g, here)
+               ? Contact::AtRest
+               : Contact::New;
+  };
   // Moved vertices only ever go back along the segment to rest, so a face
   // can only meet the faces its swept box (placed and rest positions of its
   // vertices) overlaps: one pass over the mesh finds them for all rounds.
@@ -379,24 +424,29 @@ IntersectionStats revertSelfIntersections(
   // Slot of each face of a moved vertex in nearOfQuery.
   std::vector<std::uint32_t> querySlot(m.face.size(), 0);
   for (std::size_t q = 0; q < query.size(); ++q) querySlot[query[q]] = std::uint32_t(q);
-  // Pairs of intersecting faces with at least one face in `faces` (faces of
-  // moved vertices), smaller index first, sorted and unique.
+  // Pairs of faces with at least one face in `faces` (faces of moved
+  // vertices) in a new contact, smaller index first, sorted and unique.
+  // Pairs in a contact there at rest too go to `atRest`.
   std::vector<char> inRound(m.face.size(), 0);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> atRest;
   const auto intersectingPairs = [&](const std::vector<std::uint32_t> &faces) {
     for (const std::uint32_t fi : faces) inRound[fi] = 1;
-    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(detail::maxThreads());
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(detail::maxThreads()),
+        foundAtRest(detail::maxThreads());
     const std::int64_t count = std::int64_t(faces.size());
 #pragma omp parallel for schedule(dynamic, 64) if (count >= 4096)
     for (std::int64_t r = 0; r < count; ++r) {
       const std::uint32_t fi = faces[r];
       for (const std::uint32_t gi : nearOfQuery[querySlot[fi]]) {
         if (inRound[gi] && gi < fi) continue;  // a pair of this round's faces: tested once
-        const std::uint32_t a = std::min(fi, gi), b = std::max(fi, gi);
-        if (detail::facesIntersect<MeshType>(&m.face[a], &m.face[b]))
-          found[detail::threadNumber()].emplace_back(a, b);
+        const Contact contact = contactOf(fi, gi);
+        if (contact == Contact::None) continue;
+        (contact == Contact::AtRest ? foundAtRest : found)[detail::threadNumber()].emplace_back(
+            std::min(fi, gi), std::max(fi, gi));
       }
     }
     for (const std::uint32_t fi : faces) inRound[fi] = 0;
+    for (const auto &list : foundAtRest) atRest.insert(atRest.end(), list.begin(), list.end());
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     for (const auto &list : found) pairs.insert(pairs.end(), list.begin(), list.end());
     std::sort(pairs.begin(), pairs.end());
@@ -489,9 +539,7 @@ IntersectionStats revertSelfIntersections(
         const std::uint32_t fi = incident[j];
         ok = minAngleOf(fi) >= degenerateAngleRad && normalOf(fi) * restNormal[j - offset[v]] > 0;
         for (std::size_t o = 0; o < others.size() && ok; ++o)
-          if (others[o] != fi)
-            ok = !detail::facesIntersect<MeshType>(&m.face[std::min(fi, others[o])],
-                                                   &m.face[std::max(fi, others[o])]);
+          if (others[o] != fi) ok = contactOf(fi, others[o]) != Contact::New;
       }
       if (ok) found = lv;
     }
@@ -566,6 +614,7 @@ IntersectionStats revertSelfIntersections(
     std::sort(query.begin(), query.end());
     query.erase(std::unique(query.begin(), query.end()), query.end());
   }
+  unfixable.insert(unfixable.end(), atRest.begin(), atRest.end());
   std::sort(unfixable.begin(), unfixable.end());
   s.remaining = std::size_t(std::unique(unfixable.begin(), unfixable.end()) - unfixable.begin());
   return s;

@@ -13,31 +13,31 @@ namespace edge_sharpener {
 
 /// Stage 1: smooth-edge test.
 struct SmoothEdgeStats {
-  std::size_t edges = 0;           ///< undirected edges
-  std::size_t boundaryEdges = 0;   ///< edges with one incident face (never smooth)
-  std::size_t degenerateEdges = 0; ///< interior edges next to a zero-area face (never smooth)
-  std::size_t smoothEdges = 0;     ///< "brown" edges
-  double meanAngleRad = 0;         ///< mean normal angle over interior edges
-  double thresholdRad = 0;         ///< multiplier x meanAngleRad
+  std::size_t edges = 0;            ///< undirected edges
+  std::size_t boundaryEdges = 0;    ///< edges with one incident face (never smooth)
+  std::size_t degenerateEdges = 0;  ///< interior edges next to a zero-area face (never smooth)
+  std::size_t smoothEdges = 0;      ///< "brown" edges
+  double meanAngleRad = 0;          ///< mean normal angle over interior edges
+  double thresholdRad = 0;          ///< multiplier x meanAngleRad
 };
 
 /// Stage 2: the six filters of the paper.
 struct FilterStats {
-  std::size_t interiorRedVertices = 0; ///< filter 1
-  std::size_t coreRedFaces = 0;        ///< filter 2
-  std::size_t redFaces = 0;            ///< after filter 3 (recursive growth)
-  std::size_t redVertices = 0;         ///< after filter 4
-  std::size_t redEdges = 0;            ///< filter 4
-  std::size_t chamferEdges = 0;        ///< filter 5 ("blue")
-  std::size_t cornerFaces = 0;         ///< filter 6 ("green")
-  std::size_t chamferFaces = 0;        ///< faces with one or two chamfer edges
+  std::size_t interiorRedVertices = 0;  ///< filter 1
+  std::size_t coreRedFaces = 0;         ///< filter 2
+  std::size_t redFaces = 0;             ///< after filter 3 (recursive growth)
+  std::size_t redVertices = 0;          ///< after filter 4
+  std::size_t redEdges = 0;             ///< filter 4
+  std::size_t chamferEdges = 0;         ///< filter 5 ("blue")
+  std::size_t cornerFaces = 0;          ///< filter 6 ("green")
+  std::size_t chamferFaces = 0;         ///< faces with one or two chamfer edges
 };
 
 /// Stage 3+4: split plan and subdivision.
 struct SubdivisionStats {
-  std::size_t facesSplitIn2 = 0;   ///< one chamfer edge
-  std::size_t facesSplitIn3 = 0;   ///< two chamfer edges
-  std::size_t facesSplitIn6 = 0;   ///< corner triangles (fan)
+  std::size_t facesSplitIn2 = 0;  ///< one chamfer edge
+  std::size_t facesSplitIn3 = 0;  ///< two chamfer edges
+  std::size_t facesSplitIn6 = 0;  ///< corner triangles (fan)
   std::size_t insertedVertices = 0;
   std::size_t addedFaces = 0;
 };
@@ -63,8 +63,8 @@ struct CleanupStats {
   std::size_t removedFaces = 0;     ///< faces deleted by those collapses (2 each, 1 on a border)
   std::size_t flips = 0;            ///< edges flipped inside split faces
   std::size_t reverted = 0;         ///< inserted vertices moved back (counted in placement too)
-  std::size_t remaining = 0;   ///< faces with a moved vertex still below the threshold
-  std::size_t inherited = 0;   ///< degenerate children of input slivers, no vertex moved
+  std::size_t remaining = 0;        ///< faces with a moved vertex still below the threshold
+  std::size_t inherited = 0;        ///< degenerate children of input slivers, no vertex moved
 };
 
 /// Stage 6b: moved vertices sent back to rest because a face of theirs
@@ -74,7 +74,7 @@ struct IntersectionStats {
   std::size_t reverted = 0;           ///< inserted vertices sent back (counted in placement too)
   std::size_t zoneReverted = 0;       ///< extended method: projected zone vertices back at rest
   std::size_t rounds = 0;             ///< rounds of search + revert that found an intersection
-  std::size_t remaining = 0;          ///< intersecting pairs left with no moved vertex (at rest)
+  std::size_t remaining = 0;          ///< intersecting pairs left alone: they intersect at rest too
 };
 
 /// Extended method: segmentation and zone labelling.
@@ -113,10 +113,10 @@ inline std::string formatReport(const SharpenReport &r) {
   constexpr double kDeg = 180.0 / 3.14159265358979323846;
   s << "input: " << r.inputVertices << " vertices, " << r.inputFaces << " faces, longest edge "
     << r.longestInputEdge << "\n";
-  s << "smooth edges: " << r.smooth.smoothEdges << " of " << r.smooth.edges << " (mean normal angle "
-    << r.smooth.meanAngleRad * kDeg << " deg, threshold " << r.smooth.thresholdRad * kDeg
-    << " deg; boundary " << r.smooth.boundaryEdges << ", next to degenerate faces "
-    << r.smooth.degenerateEdges << ")\n";
+  s << "smooth edges: " << r.smooth.smoothEdges << " of " << r.smooth.edges
+    << " (mean normal angle " << r.smooth.meanAngleRad * kDeg << " deg, threshold "
+    << r.smooth.thresholdRad * kDeg << " deg; boundary " << r.smooth.boundaryEdges
+    << ", next to degenerate faces " << r.smooth.degenerateEdges << ")\n";
   s << "filters: interior red vertices " << r.filters.interiorRedVertices << ", core red faces "
     << r.filters.coreRedFaces << ", red faces " << r.filters.redFaces << ", red vertices "
     << r.filters.redVertices << ", chamfer edges " << r.filters.chamferEdges << ", chamfer faces "
@@ -128,8 +128,8 @@ inline std::string formatReport(const SharpenReport &r) {
       << " at internal creases";
     if (r.extended.returnedBorderFaces > 0)
       s << ", " << r.extended.returnedBorderFaces << " turned from their region's plane";
-    s << "), " << r.extended.labelledZoneVertices << " of "
-      << r.extended.zoneVertices << " zone vertices labelled";
+    s << "), " << r.extended.labelledZoneVertices << " of " << r.extended.zoneVertices
+      << " zone vertices labelled";
     if (r.geometryChanged)
       s << ", " << r.extended.projectedVertices << " projected onto their region (max "
         << r.extended.maxProjection << ", " << r.extended.projectionsRejected << " refused)";
@@ -144,20 +144,21 @@ inline std::string formatReport(const SharpenReport &r) {
     << r.placement.maxDisplacement << "), " << r.placement.fallbacks() << " kept by fallback";
   for (int i = 0; i < kPlacementCount; ++i) {
     auto p = static_cast<Placement>(i);
-    if (p == Placement::Original || p == Placement::Moved || r.placement.byOutcome[i] == 0) continue;
+    if (p == Placement::Original || p == Placement::Moved || r.placement.byOutcome[i] == 0)
+      continue;
     s << "; " << toString(p) << " " << r.placement.byOutcome[i];
   }
   s << "\n";
   s << "cleanup: " << r.cleanup.degenerateFound << " degenerate faces found, "
-    << r.cleanup.collapses << " collapses, " << r.cleanup.flips << " flips, "
-    << r.cleanup.reverted << " vertices reverted, " << r.cleanup.remaining << " remaining, "
-    << r.cleanup.inherited << " inherited from input slivers\n";
+    << r.cleanup.collapses << " collapses, " << r.cleanup.flips << " flips, " << r.cleanup.reverted
+    << " vertices reverted, " << r.cleanup.remaining << " remaining, " << r.cleanup.inherited
+    << " inherited from input slivers\n";
   s << "self-intersections: " << r.intersections.intersectingPairs
     << " intersecting face pairs found, " << r.intersections.reverted
     << " inserted vertices reverted";
   if (r.extendedMethod) s << ", " << r.intersections.zoneReverted << " zone vertices reverted";
   s << " (" << r.intersections.rounds << " rounds), " << r.intersections.remaining
-    << " remaining\n";
+    << " left as they are (they intersect at rest too)\n";
   s << "output: " << r.outputVertices << " vertices, " << r.outputFaces << " faces\n";
   return s.str();
 }
