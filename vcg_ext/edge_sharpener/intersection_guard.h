@@ -378,7 +378,8 @@ IntersectionStats revertSelfIntersections(
   // Where every vertex was before sharpening moved it.
   const auto restPosition = [&](const auto *vp) {
     const std::size_t v = vcg::tri::Index(m, vp);
-    return v >= n0 || !originalRest.empty() ? Vec3::Construct(restOf(v)) : positionOf(vp);
+    const bool hasRest = v < n0 ? !originalRest.empty() : v - n0 < plan.inserted.size();
+    return hasRest ? Vec3::Construct(restOf(v)) : positionOf(vp);
   };
   // How two faces meet: not at all, in a contact sharpening made, or in one
   // that is there at rest too (in the input: moving back would not resolve
