@@ -18,6 +18,7 @@
 #include <vcg/complex/complex.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -53,19 +54,10 @@ inline int threadNumber() {
 #endif
 }
 
-/// Face bounding box in double precision.
+/// Axis-aligned box in double precision: of a point, grown to hold a face
+/// or the faces a moving vertex sweeps.
 struct FaceBox {
   double lo[3], hi[3];
-  template <class FaceType>
-  explicit FaceBox(const FaceType &f) {
-    for (int c = 0; c < 3; ++c) {
-      lo[c] = hi[c] = double(f.cV(0)->cP()[c]);
-      for (int k = 1; k < 3; ++k) {
-        lo[c] = std::min(lo[c], double(f.cV(k)->cP()[c]));
-        hi[c] = std::max(hi[c], double(f.cV(k)->cP()[c]));
-      }
-    }
-  }
   FaceBox() = default;
   /// The box of one point.
   explicit FaceBox(const Vec3 &p) {
@@ -82,6 +74,12 @@ struct FaceBox {
   }
 };
 
+/// Whether two triangles sharing no vertex meet (touching included):
+/// Moeller's test, unless trianglesApart() finds a gap between them.
+inline bool trianglesMeet(const std::array<Vec3, 3> &p, const std::array<Vec3, 3> &q) {
+  return !trianglesApart(p, q) && vcg::NoDivTriTriIsect(p[0], p[1], p[2], q[0], q[1], q[2]);
+}
+
 /// Whether two distinct faces intersect: vcglib's test (the one
 /// tri::Clean::SelfIntersections() applies: TestFaceFaceIntersection), on
 /// the coordinates in double precision. Faces sharing an edge are not tested;
@@ -92,24 +90,21 @@ struct FaceBox {
 /// Moeller's test reports nearly coplanar faces millimetres apart as
 /// intersecting: its interval arithmetic divides by the tiny distances to
 /// the other face's plane.) `position(vertex pointer)` gives the
-/// coordinates to test at (default: where the vertices are).
+/// coordinates to test at.
 template <class MeshType, class FaceType = typename MeshType::FaceType, class Position>
 bool facesIntersect(FaceType *f, FaceType *g, Position &&position) {
   const int shared = vcg::face::CountSharedVertex(f, g);
   if (shared == 2) return false;
   if (shared == 3) return true;
-  Vec3 p[3], q[3];
+  std::array<Vec3, 3> p, q;
   for (int k = 0; k < 3; ++k) p[k] = position(f->cV(k)), q[k] = position(g->cV(k));
-  if (shared == 0) {
-    if (trianglesApart({p[0], p[1], p[2]}, {q[0], q[1], q[2]})) return false;
-    return vcg::NoDivTriTriIsect(p[0], p[1], p[2], q[0], q[1], q[2]);
-  }
+  if (shared == 0) return trianglesMeet(p, q);
   int i0 = 0, i1 = 0;
   vcg::face::FindSharedVertex(f, g, i0, i1);
   // As vcglib: the first segment that meets the other face decides.
   const Vec3 half = p[i0] * 0.5;
   for (int side = 0; side < 2; ++side) {
-    const Vec3 *a = side == 0 ? p : q, *b = side == 0 ? q : p;
+    const Vec3 *a = side == 0 ? p.data() : q.data(), *b = side == 0 ? q.data() : p.data();
     const int ia = side == 0 ? i0 : i1;
     const vcg::Segment3<double> seg(a[(ia + 1) % 3] * 0.5 + half, a[(ia + 2) % 3] * 0.5 + half);
     double u, v;
@@ -119,11 +114,6 @@ bool facesIntersect(FaceType *f, FaceType *g, Position &&position) {
     }
   }
   return false;
-}
-
-template <class MeshType, class FaceType = typename MeshType::FaceType>
-bool facesIntersect(FaceType *f, FaceType *g) {
-  return facesIntersect<MeshType>(f, g, [](const auto *v) { return positionOf(v); });
 }
 
 /// Whether two faces cross rather than only touch: they still meet when
@@ -139,7 +129,7 @@ bool facesCross(FaceType *f, FaceType *g, Position &&position) {
   };
   shrink(f, p);
   shrink(g, q);
-  return !trianglesApart(p, q) && vcg::NoDivTriTriIsect(p[0], p[1], p[2], q[0], q[1], q[2]);
+  return trianglesMeet(p, q);
 }
 
 /// Calls visit(thread, slot, gi) for every face gi of the mesh whose box
@@ -549,7 +539,6 @@ IntersectionStats revertSelfIntersections(
   };
 
   std::vector<std::uint32_t> score(m.vert.size(), 0), slot(m.vert.size(), 0);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> unfixable;
   constexpr int kMaxRounds = 1000;
   for (int round = 0; round < kMaxRounds && !query.empty(); ++round) {
     const auto pairs = intersectingPairs(query);
@@ -593,7 +582,7 @@ IntersectionStats revertSelfIntersections(
         if (better) best = v, bestLevel = lv, bestDisplacement = d;
       });
       if (best == std::numeric_limits<std::size_t>::max()) {
-        unfixable.push_back(p);  // no moved vertex: present at rest (e.g. in the input)
+        atRest.push_back(p);  // no moved vertex left: the pair is there at rest
         continue;
       }
       if (bestLevel == 0) {
@@ -615,9 +604,8 @@ IntersectionStats revertSelfIntersections(
     std::sort(query.begin(), query.end());
     query.erase(std::unique(query.begin(), query.end()), query.end());
   }
-  unfixable.insert(unfixable.end(), atRest.begin(), atRest.end());
-  std::sort(unfixable.begin(), unfixable.end());
-  s.remaining = std::size_t(std::unique(unfixable.begin(), unfixable.end()) - unfixable.begin());
+  std::sort(atRest.begin(), atRest.end());
+  s.remaining = std::size_t(std::unique(atRest.begin(), atRest.end()) - atRest.begin());
   return s;
 }
 
