@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <limits>
 
 #include "edge_sharpener/edge_sharpener.h"
 #include "edge_sharpener/mesh_types.h"
+#include "test_meshes/shapes.h"
 
 namespace es = edge_sharpener;
 
@@ -293,13 +295,11 @@ TEST(Fallbacks, CornerPairBendsAwayWhereTheCornerDoesNot) {
   using es::Vec3;
   // Solid x, y, z <= 0: top A (z = 0), side B (x = 0), front C (y = 0).
   es::SupportPlanes support;
-  support.plane = {Plane{Vec3(-0.3, -0.3, 0), Vec3(0, 0, 1)},
-                   Plane{Vec3(0, -0.5, -0.2), Vec3(1, 0, 0)},
-                   Plane{Vec3(-0.3, 0, -0.3), Vec3(0, 1, 0)}};
-  support.spreadRad = {0.0, 10 * M_PI / 180, 0.0};
-  support.normalScatter.assign(3, CrossScatter3{});
-  support.pointScatter.assign(3, CrossScatter3{});
-  support.normalSelfScatter.assign(3, CrossScatter3{});
+  support.reset(3);
+  support.measured = true;
+  support.setFit(0, es::SupportFit::of(Plane{Vec3(-0.3, -0.3, 0), Vec3(0, 0, 1)}));
+  support.setFit(1, es::SupportFit::of(Plane{Vec3(0, -0.5, -0.2), Vec3(1, 0, 0)}, 10 * M_PI / 180));
+  support.setFit(2, es::SupportFit::of(Plane{Vec3(-0.3, 0, -0.3), Vec3(0, 1, 0)}));
   // B's faces: spread widely along y (the cylinder's axis), narrowly along z,
   // normals turning with z at curvature `k`.
   const auto curveSide = [&](double k) {
@@ -311,9 +311,9 @@ TEST(Fallbacks, CornerPairBendsAwayWhereTheCornerDoesNot) {
         extent.add(offset, offset, 1.0 / 9);
         self.add(deviation, deviation, 1.0 / 9);
       }
-    support.normalScatter[1] = turn;
-    support.pointScatter[1] = extent;
-    support.normalSelfScatter[1] = self;
+    support.fits[1].normalScatter = turn;
+    support.fits[1].pointScatter = extent;
+    support.fits[1].normalSelfScatter = self;
   };
   es::InsertedVertexSource corner;
   corner.original = {0, 1, 2};
@@ -321,7 +321,7 @@ TEST(Fallbacks, CornerPairBendsAwayWhereTheCornerDoesNot) {
   corner.rest = Vec3(-0.1, -0.1, -0.1);
   es::SharpenOptions opt;
   opt.method = es::Method::Extended;
-  const Plane planes[3] = {support.plane[0], support.plane[1], support.plane[2]};
+  const Plane planes[3] = {support.plane(0), support.plane(1), support.plane(2)};
 
   curveSide(5.0);
   EXPECT_FALSE(es::detail::flankBendsAway(corner, planes, support, opt, Vec3(0, 0, 0)));
@@ -346,7 +346,9 @@ TEST(Fallbacks, SourceOffItsPlaneKeepsVertexAtRest) {
   // Solid x, z <= 0: side A (x = 0) and top B (z = 0), chamfer from
   // (0, 0, -0.2) to (-0.2, 0, 0); the sharp edge is the y axis.
   es::SupportPlanes support;
-  support.plane = {Plane{Vec3(0, 0, -0.2), Vec3(1, 0, 0)}, Plane{Vec3(-0.2, 0, 0), Vec3(0, 0, 1)}};
+  support.reset(2);
+  support.setFit(0, es::SupportFit::of(Plane{Vec3(0, 0, -0.2), Vec3(1, 0, 0)}));
+  support.setFit(1, es::SupportFit::of(Plane{Vec3(-0.2, 0, 0), Vec3(0, 0, 1)}));
   support.offPlane = {0.0, 0.05};
   support.sampleSpacing = 0.1;
   es::InsertedVertexSource edge;
@@ -474,11 +476,58 @@ TEST(IntersectionGuard, BoxOverlapFindsFacesInTheLastPartialCell) {
   for (int c = 0; c < 3; ++c) boxes[0].lo[c] = 0, boxes[0].hi[c] = 1;
   boxes[1] = boxes[0];
   boxes[1].lo[0] = 1.5, boxes[1].hi[0] = 2.5;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> hits;
-  es::detail::forEachBoxOverlap(
-      m, boxes, [&](std::size_t v) { return es::detail::FaceBox(es::positionOf(&m.vert[v])); },
-      [&](int, std::uint32_t box, std::uint32_t face) { hits.emplace_back(box, face); });
-  std::sort(hits.begin(), hits.end());
   const std::vector<std::pair<std::uint32_t, std::uint32_t>> expected{{0, 1}, {1, 0}};
+  // With and without the vertex flags (every face spans at most 0.2).
+  for (const double stillExtent : {0.2, std::numeric_limits<double>::infinity()}) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> hits;
+    es::detail::forEachBoxOverlap(
+        m, boxes, [&](std::size_t v) { return es::detail::FaceBox(es::positionOf(&m.vert[v])); },
+        std::vector<char>(m.vert.size(), 0), stillExtent,
+        [&](int, std::uint32_t box, std::uint32_t face) { hits.emplace_back(box, face); });
+    std::sort(hits.begin(), hits.end());
+    EXPECT_EQ(hits, expected) << "stillExtent " << stillExtent;
+  }
+}
+
+// The broad phase finds exactly the face/box pairs whose boxes overlap, as
+// a test of every pair does: boxes around some faces of a marching-cubes
+// sphere, some vertices moving along a segment, the vertex flags on.
+TEST(IntersectionGuard, BoxOverlapMatchesEveryPairTest) {
+  es::Mesh m;
+  es::test_meshes::marchingCubes(es::test_meshes::shapeByName("sphere"), 0.08, m);
+  ASSERT_GT(m.fn, 1000);
+  std::vector<char> moving(m.vert.size(), 0);
+  for (std::size_t v = 0; v < m.vert.size(); v += 37) moving[v] = 1;
+  const auto vertexBox = [&](std::size_t v) {
+    es::detail::FaceBox b(es::positionOf(&m.vert[v]));
+    if (moving[v]) b.unite(es::detail::FaceBox(es::positionOf(&m.vert[v]) * 0.9));
+    return b;
+  };
+  const auto faceBox = [&](std::size_t f) {
+    es::detail::FaceBox b = vertexBox(vcg::tri::Index(m, m.face[f].cV(0)));
+    for (int k = 1; k < 3; ++k) b.unite(vertexBox(vcg::tri::Index(m, m.face[f].cV(k))));
+    return b;
+  };
+  double stillExtent = 0;
+  std::vector<es::detail::FaceBox> boxes;
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    const es::detail::FaceBox b = faceBox(f);
+    bool still = true;
+    for (int k = 0; k < 3; ++k) still &= !moving[vcg::tri::Index(m, m.face[f].cV(k))];
+    if (still)
+      for (int c = 0; c < 3; ++c) stillExtent = std::max(stillExtent, b.hi[c] - b.lo[c]);
+    if (f % 11 == 0) boxes.push_back(b);
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> expected, hits;
+  for (std::size_t q = 0; q < boxes.size(); ++q)
+    for (std::size_t f = 0; f < m.face.size(); ++f)
+      if (faceBox(f).overlaps(boxes[q])) expected.emplace_back(q, f);
+  es::detail::forEachBoxOverlap(m, boxes, vertexBox, moving, stillExtent,
+                                [&](int, std::uint32_t q, std::uint32_t f) {
+#pragma omp critical
+                                  hits.emplace_back(q, f);
+                                });
+  std::sort(hits.begin(), hits.end());
+  EXPECT_GT(expected.size(), boxes.size());
   EXPECT_EQ(hits, expected);
 }

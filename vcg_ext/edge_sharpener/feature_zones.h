@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <deque>
 #include <vector>
 
@@ -25,6 +26,7 @@
 #include "geometry.h"
 #include "mesh_labels.h"
 #include "options.h"
+#include "parallel.h"
 #include "placement.h"
 #include "report.h"
 #include "vertex_faces.h"
@@ -88,22 +90,29 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
       if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
   }
-  std::vector<int> regionOfRoot(nf, kZone);
+  // Every root is the smallest face of its component (a union keeps the
+  // smaller root, halving points to smaller faces), so one pass in face order
+  // points every face at its root; the root's entry of faceRegion holds the
+  // region id until the second pass copies it to the component.
+  zones.faceRegion.assign(nf, kZone);
   int regions = 0;
-  for (std::size_t fi = 0; fi < nf; ++fi)
+  for (std::size_t fi = 0; fi < nf; ++fi) {
+    parent[fi] = parent[parent[fi]];
     if (!m.face[fi].IsD() && labels.face[&m.face[fi]] == FaceLabel::Red) {
-      int &id = regionOfRoot[find(std::uint32_t(fi))];
+      int &id = zones.faceRegion[parent[fi]];
       if (id == kZone) id = regions++;
     }
-  zones.faceRegion.assign(nf, kZone);
+  }
   for (std::size_t fi = 0; fi < nf; ++fi)
-    if (!m.face[fi].IsD()) zones.faceRegion[fi] = regionOfRoot[find(std::uint32_t(fi))];
+    if (!m.face[fi].IsD() && parent[fi] != fi) zones.faceRegion[fi] = zones.faceRegion[parent[fi]];
 
   // Depth of each region's vertices from the region's border, in hops.
-  const std::size_t nv = m.vert.size();
+  // Interior vertices (all faces in one region, no border edge) first, on
+  // every core; the others start the waves.
+  const std::int64_t nv = std::int64_t(m.vert.size());
   std::vector<int> depth(nv, -1), vertexRegion(nv, kZone);
-  std::deque<std::size_t> queue;
-  for (std::size_t v = 0; v < nv; ++v) {
+#pragma omp parallel for schedule(static, 8192) if (nv > kParallelMin)
+  for (std::int64_t v = 0; v < nv; ++v) {
     if (vf.degree(v) == 0) continue;
     int r = zones.faceRegion[*vf.begin(v)];
     bool interior = r != kZone;
@@ -111,17 +120,18 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
       const auto &f = m.face[*fi];
       if (zones.faceRegion[*fi] != r) interior = false;
       for (int k = 0; k < 3 && interior; ++k)  // a border edge at v
-        if (f.cFFp(k) == &f &&
-            (vcg::tri::Index(m, f.cV(k)) == v || vcg::tri::Index(m, f.cV((k + 1) % 3)) == v))
+        if (f.cFFp(k) == &f && (vcg::tri::Index(m, f.cV(k)) == std::size_t(v) ||
+                                vcg::tri::Index(m, f.cV((k + 1) % 3)) == std::size_t(v)))
           interior = false;
     }
-    if (interior) {
-      vertexRegion[v] = r;
-    } else {
-      depth[v] = 0;
-      queue.push_back(v);
-    }
+    if (interior) vertexRegion[v] = r;
   }
+  std::deque<std::size_t> queue;
+  for (std::int64_t v = 0; v < nv; ++v)
+    if (vf.degree(v) > 0 && vertexRegion[v] == kZone) {
+      depth[v] = 0;
+      queue.push_back(std::size_t(v));
+    }
   std::vector<int> maxDepth(regions, 0);
   while (!queue.empty()) {
     const std::size_t v = queue.front();
@@ -228,24 +238,19 @@ inline bool differentSurfaces(const FeatureZones &zones, std::size_t a, std::siz
   const int la = zones.vertexLabel[a], lb = zones.vertexLabel[b];
   if (la < 0 || lb < 0) return false;
   if (la != lb) return true;
-  return planesTurnApart(zones.support.plane[a].normal, zones.support.plane[b].normal,
+  return planesTurnApart(zones.support.plane(a).normal, zones.support.plane(b).normal,
                          featureAngleRad);
 }
 
-/// A region's plane near one vertex, and how the region departs from it.
-struct RegionPlaneFit {
-  Plane plane{Vec3(0, 0, 0), Vec3(0, 0, 0)};
-  double spreadRad = 0;         ///< largest angle between the normal and a fitted face's
-  CrossScatter3 normalScatter;  ///< area-weighted (normal - plane normal)(centroid - point)^T
-  CrossScatter3 pointScatter;   ///< area-weighted (centroid - point)(centroid - point)^T
-  CrossScatter3 normalSelfScatter;  ///< area-weighted (normal - plane normal)(...)^T
-};
+/// A region's plane near one vertex, and how the region departs from it
+/// (placement.h: SupportFit).
+using RegionPlaneFit = SupportFit;
 
 /// How fitRegionPlane() fits: face rings, trim angle, and (strict plane
 /// guard) the seed away from the zone.
 struct PlaneFitSettings {
-  int rings = 2;         ///< SharpenOptions::supportRings
-  double trimRad = 0;    ///< SharpenOptions::fitTrimAngleRad
+  int rings = 2;       ///< SharpenOptions::supportRings
+  double trimRad = 0;  ///< SharpenOptions::fitTrimAngleRad
   /// SharpenOptions::fitSeedFlatAngleRad (0: off); needs `nearZone`.
   double seedFlatRad = 0;
   /// Per vertex: 1 when it has a zone face; null when not seeding.
@@ -261,8 +266,10 @@ struct PlaneFitSettings {
 template <class MeshType>
 std::vector<char> verticesTouchingZone(const MeshType &m, const VertexFaceTable &vf,
                                        const FeatureZones &zones) {
-  std::vector<char> touches(m.vert.size(), 0);
-  for (std::size_t v = 0; v < m.vert.size(); ++v)
+  const std::int64_t nv = std::int64_t(m.vert.size());
+  std::vector<char> touches(nv, 0);
+#pragma omp parallel for schedule(static, 8192) if (nv > kParallelMin)
+  for (std::int64_t v = 0; v < nv; ++v)
     for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v) && !touches[v]; ++fi)
       touches[v] = zones.faceRegion[*fi] == kZone;
   return touches;
@@ -381,8 +388,8 @@ std::size_t returnTurnedBorderFaces(const MeshType &m, const MeshLabels<MeshType
     regionsAtVertex.clear();
     for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
       const int r = zones.faceRegion[*fi];
-      if (r != kZone && std::find(regionsAtVertex.begin(), regionsAtVertex.end(), r) ==
-                            regionsAtVertex.end())
+      if (r != kZone &&
+          std::find(regionsAtVertex.begin(), regionsAtVertex.end(), r) == regionsAtVertex.end())
         regionsAtVertex.push_back(r);
     }
     for (const int r : regionsAtVertex) {
@@ -409,16 +416,47 @@ std::size_t returnTurnedBorderFaces(const MeshType &m, const MeshLabels<MeshType
 /// \pre FF adjacency.
 template <class MeshType>
 double medianEdgeLength(const MeshType &m) {
-  std::vector<float> lengths;
-  lengths.reserve(3 * m.face.size() / 2 + 16);
-  for (const auto &f : m.face)
-    if (!f.IsD())
+  // Collected on every core (the k-th smallest length does not depend on
+  // the order of the list).
+  const std::int64_t nf = std::int64_t(m.face.size());
+  const int threads = nf > kParallelMin ? detail::maxThreads() : 1;
+  std::vector<std::vector<float>> parts(threads);
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<float> &lengths = parts[detail::threadNumber()];
+    lengths.reserve(3 * nf / (2 * threads) + 16);
+#pragma omp for schedule(static, 8192)
+    for (std::int64_t fi = 0; fi < nf; ++fi) {
+      const auto &f = m.face[fi];
+      if (f.IsD()) continue;
       for (int i = 0; i < 3; ++i)
         if (f.cFFp(i) >= &f)
           lengths.push_back(float((positionOf(f.cV(i)) - positionOf(f.cV((i + 1) % 3))).Norm()));
-  if (lengths.empty()) return 0.0;
-  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-  return lengths[lengths.size() / 2];
+    }
+  }
+  std::size_t total = 0;
+  for (const auto &part : parts) total += part.size();
+  if (total == 0) return 0.0;
+  // Radix select: non-negative floats order as their bit patterns do, so a
+  // histogram of the upper 16 bits finds the bucket of the middle element,
+  // and only that bucket is sorted partially.
+  const auto bitsOf = [](float x) {
+    std::uint32_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  };
+  std::vector<std::size_t> count(std::size_t(1) << 16, 0);
+  for (const auto &part : parts)
+    for (const float x : part) ++count[bitsOf(x) >> 16];
+  std::size_t rank = total / 2, bucket = 0;
+  while (rank >= count[bucket]) rank -= count[bucket++];
+  std::vector<float> inBucket;
+  inBucket.reserve(count[bucket]);
+  for (const auto &part : parts)
+    for (const float x : part)
+      if ((bitsOf(x) >> 16) == bucket) inBucket.push_back(x);
+  std::nth_element(inBucket.begin(), inBucket.begin() + rank, inBucket.end());
+  return inBucket[rank];
 }
 
 /// Fills zones.support.offPlane: how far each labelled vertex lies from its
@@ -429,7 +467,7 @@ void measureOffPlane(const MeshType &m, FeatureZones &zones) {
   auto &support = zones.support;
   support.offPlane.assign(m.vert.size(), 0.0);
   for (std::size_t v = 0; v < m.vert.size(); ++v) {
-    const Plane &pl = support.plane[v];
+    const Plane &pl = support.plane(v);
     if (pl.normal.SquaredNorm() > 0)
       support.offPlane[v] = std::abs(pl.normal * (positionOf(&m.vert[v]) - pl.point));
   }
@@ -448,33 +486,47 @@ void collectNearbyRegions(const MeshType &m, const VertexFaceTable &vf, FeatureZ
   support.nearby.assign(
       nv, {SupportPlanes::kNoVertex, SupportPlanes::kNoVertex, SupportPlanes::kNoVertex});
   const auto hasPlane = [&](std::size_t v) {
-    return zones.vertexLabel[v] >= 0 && support.plane[v].normal.SquaredNorm() > 0;
+    return zones.vertexLabel[v] >= 0 && support.plane(v).normal.SquaredNorm() > 0;
   };
+  std::vector<std::uint32_t> withPlane;
   for (std::size_t v = 0; v < nv; ++v)
-    if (hasPlane(v)) support.region[v] = zones.vertexLabel[v];
-  std::vector<std::size_t> visited, frontier, next;
-  std::vector<int> stamp(nv, -1);
-  for (std::size_t v = 0; v < nv; ++v) {
-    if (!hasPlane(v)) continue;
-    auto &found = support.nearby[v];
-    int count = 0;
-    frontier.assign(1, v);
-    stamp[v] = int(v);
-    for (int ring = 0; ring < rings && count < 3; ++ring) {
-      next.clear();
-      for (std::size_t w : frontier)
-        detail::forEachNeighbour(m, vf, w, [&](std::size_t u) {
-          if (stamp[u] == int(v)) return;
-          stamp[u] = int(v);
-          next.push_back(u);
-        });
-      for (std::size_t u : next) {
-        if (count == 3 || !hasPlane(u) || support.region[u] == support.region[v]) continue;
-        bool known = false;
-        for (int i = 0; i < count; ++i) known |= support.region[found[i]] == support.region[u];
-        if (!known) found[count++] = std::uint32_t(u);
+    if (hasPlane(v)) {
+      support.region[v] = zones.vertexLabel[v];
+      withPlane.push_back(std::uint32_t(v));
+    }
+  // Each vertex writes only its own entry: on every core, each thread with
+  // its own visit stamps.
+  const std::int64_t count = std::int64_t(withPlane.size());
+  const int threads = count >= 256 ? detail::maxThreads() : 1;
+  std::vector<std::vector<std::uint32_t>> stamps(threads);
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<std::uint32_t> &stamp = stamps[detail::threadNumber()];
+    std::vector<std::size_t> frontier, next;
+#pragma omp for schedule(dynamic, 256)
+    for (std::int64_t k = 0; k < count; ++k) {
+      if (stamp.empty()) stamp.assign(nv, SupportPlanes::kNoVertex);
+      const std::uint32_t v = withPlane[k];
+      auto &found = support.nearby[v];
+      int n = 0;
+      frontier.assign(1, v);
+      stamp[v] = v;
+      for (int ring = 0; ring < rings && n < 3; ++ring) {
+        next.clear();
+        for (std::size_t w : frontier)
+          detail::forEachNeighbour(m, vf, w, [&](std::size_t u) {
+            if (stamp[u] == v) return;
+            stamp[u] = v;
+            next.push_back(u);
+          });
+        for (std::size_t u : next) {
+          if (n == 3 || !hasPlane(u) || support.region[u] == support.region[v]) continue;
+          bool known = false;
+          for (int i = 0; i < n; ++i) known |= support.region[found[i]] == support.region[u];
+          if (!known) found[n++] = std::uint32_t(u);
+        }
+        frontier.swap(next);
       }
-      frontier.swap(next);
     }
   }
 }
@@ -489,12 +541,15 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
   const std::size_t nv = m.vert.size();
   zones.vertexLabel.assign(nv, kZone);
   zones.inRegion.assign(nv, 0);
-  zones.support.resetMeasured(nv);
-  std::vector<int> stamp(m.face.size(), -1);
-  int stampValue = 0;
+  zones.support.reset(nv);
+  zones.support.measured = true;
   const std::vector<char> touchesZone = verticesTouchingZone(m, vf, zones);
   const PlaneFitSettings fitSettings = PlaneFitSettings::from(opt, touchesZone);
-  for (std::size_t v = 0; v < nv; ++v) {
+  // Region vertices take their region (kCrease where several meet); each
+  // vertex reads only its own faces, so the loop runs on every core.
+  const std::int64_t count = std::int64_t(nv);
+#pragma omp parallel for schedule(static, 8192) if (count > kParallelMin)
+  for (std::int64_t v = 0; v < count; ++v) {
     int label = kZone;
     for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
       const int r = zones.faceRegion[*fi];
@@ -504,20 +559,36 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
       else if (label != r)
         label = kCrease;
     }
-    if (label == kZone) {
-      stats.zoneVertices += vf.degree(v) > 0;
-      continue;
-    }
-    zones.inRegion[v] = 1;
     zones.vertexLabel[v] = label;
-    if (label >= 0 && touchesZone[v]) {
-      const RegionPlaneFit fit =
-          fitRegionPlane(m, vf, zones, v, label, fitSettings, stamp, stampValue++);
-      zones.support.storeMeasured(v, fit);
+    zones.inRegion[v] = label != kZone;
+  }
+  // Region vertices next to the zone get their region's plane there (one
+  // fit each, in vertex order); zone vertices wait for a label.
+  std::vector<std::uint32_t> fitted, zone;
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (zones.vertexLabel[v] >= 0 && touchesZone[v]) fitted.push_back(std::uint32_t(v));
+    if (!zones.inRegion[v] && vf.degree(v) > 0) zone.push_back(std::uint32_t(v));
+  }
+  stats.zoneVertices += zone.size();
+  zones.support.fits.resize(fitted.size());
+  {
+    const std::int64_t fits = std::int64_t(fitted.size());
+    const int threads = fits >= 256 ? detail::maxThreads() : 1;
+    // Per thread: stamps of the faces a fit has visited (each fit its own value).
+    std::vector<std::vector<int>> stamps(threads);
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads)
+    for (std::int64_t k = 0; k < fits; ++k) {
+      std::vector<int> &stamp = stamps[detail::threadNumber()];
+      if (stamp.empty()) stamp.assign(m.face.size(), -1);
+      const std::size_t v = fitted[k];
+      zones.support.fits[k] =
+          fitRegionPlane(m, vf, zones, v, zones.vertexLabel[v], fitSettings, stamp, int(k));
     }
+    for (std::size_t k = 0; k < fitted.size(); ++k)
+      zones.support.fitOf[fitted[k]] = std::uint32_t(k);
   }
 
-  // Breadth-first waves from every region border vertex into the zone; each
+  // Breadth-first waves from every fitted region vertex into the zone; each
   // zone vertex keeps the first arrival of up to four regions.
   struct Candidate {
     int region;
@@ -525,45 +596,48 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
     int hops;
   };
   constexpr std::size_t kMaxCandidates = 4;
-  std::vector<std::array<Candidate, kMaxCandidates>> cand(nv);
-  std::vector<std::uint8_t> candCount(nv, 0);
+  constexpr std::uint32_t kNotZone = ~std::uint32_t(0);
+  std::vector<std::uint32_t> zoneSlot(nv, kNotZone);
+  for (std::size_t k = 0; k < zone.size(); ++k) zoneSlot[zone[k]] = std::uint32_t(k);
+  std::vector<std::array<Candidate, kMaxCandidates>> cand(zone.size());
+  std::vector<std::uint8_t> candCount(zone.size(), 0);
   std::deque<std::pair<std::uint32_t, Candidate>> queue;
-  for (std::size_t v = 0; v < nv; ++v)
-    if (zones.vertexLabel[v] >= 0 && touchesZone[v])
-      queue.push_back({std::uint32_t(v), Candidate{zones.vertexLabel[v], std::uint32_t(v), 0}});
+  for (const std::uint32_t v : fitted) queue.push_back({v, Candidate{zones.vertexLabel[v], v, 0}});
   while (!queue.empty()) {
     const auto [v, c] = queue.front();
     queue.pop_front();
     if (c.hops >= opt.maxLabelHops) continue;
     detail::forEachNeighbour(m, vf, v, [&, c = c](std::size_t u) {
-      if (zones.inRegion[u]) return;
-      auto &list = cand[u];
-      std::uint8_t &n = candCount[u];
+      const std::uint32_t slot = zoneSlot[u];
+      if (slot == kNotZone) return;
+      auto &list = cand[slot];
+      std::uint8_t &n = candCount[slot];
       if (n == kMaxCandidates) return;
       if (n > 0 && c.hops + 1 > list[0].hops + opt.labelSlackHops) return;
       // One candidate per surface: a region that leaked around a fading
       // feature offers one per plane direction.
       for (std::uint8_t i = 0; i < n; ++i)
         if (list[i].region == c.region &&
-            !planesTurnApart(zones.support.plane[list[i].anchor].normal,
-                             zones.support.plane[c.anchor].normal, opt.sameRegionFeatureAngleRad))
+            !planesTurnApart(zones.support.plane(list[i].anchor).normal,
+                             zones.support.plane(c.anchor).normal, opt.sameRegionFeatureAngleRad))
           return;
       list[n++] = Candidate{c.region, c.anchor, c.hops + 1};
       queue.push_back({std::uint32_t(u), list[n - 1]});
     });
   }
-  for (std::size_t v = 0; v < nv; ++v) {
-    if (zones.inRegion[v] || candCount[v] == 0) continue;
+  for (std::size_t k = 0; k < zone.size(); ++k) {
+    const std::size_t v = zone[k];
+    if (candCount[k] == 0) continue;
     const Vec3 p = positionOf(&m.vert[v]);
     double best = std::numeric_limits<double>::infinity();
-    for (std::uint8_t i = 0; i < candCount[v]; ++i) {
-      const Plane &pl = zones.support.plane[cand[v][i].anchor];
+    for (std::uint8_t i = 0; i < candCount[k]; ++i) {
+      const Plane &pl = zones.support.plane(cand[k][i].anchor);
       if (pl.normal.SquaredNorm() == 0) continue;
       const double d = std::abs(pl.normal * (p - pl.point));
       if (d < best) {  // ties keep the earlier (closer in hops) candidate
         best = d;
-        zones.vertexLabel[v] = cand[v][i].region;
-        zones.support.copyMeasured(v, cand[v][i].anchor);
+        zones.vertexLabel[v] = cand[k][i].region;
+        zones.support.shareFit(v, cand[k][i].anchor);
       }
     }
     stats.labelledZoneVertices += zones.vertexLabel[v] >= 0;
@@ -581,28 +655,52 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
 template <class MeshType>
 FilterStats markZoneChamfers(MeshType &m, MeshLabels<MeshType> &labels, const FeatureZones &zones,
                              double sameRegionFeatureAngleRad) {
-  FilterStats s;
-  for (auto &f : m.face) {
+  // One pass over the faces, on every core: the test is symmetric, so each
+  // face labels its own side of an edge, and counts the edge from its
+  // lower-address face.
+  const std::int64_t nf = std::int64_t(m.face.size());
+  std::int64_t redFaces = 0, chamferEdges = 0, cornerFaces = 0, chamferFaces = 0;
+#pragma omp parallel for schedule(static, 4096) \
+    reduction(+ : redFaces, chamferEdges, cornerFaces, chamferFaces) if (nf > kParallelMin)
+  for (std::int64_t fi = 0; fi < nf; ++fi) {
+    auto &f = m.face[fi];
     if (f.IsD()) continue;
-    const bool region = zones.faceRegion[vcg::tri::Index(m, &f)] != kZone;
-    labels.face[&f] = region ? FaceLabel::Red : FaceLabel::Gray;
-    labels.edge[&f] = EdgeLabels3{EdgeLabel::Gray, EdgeLabel::Gray, EdgeLabel::Gray};
-    s.redFaces += region;
-  }
-  for (std::size_t v = 0; v < m.vert.size(); ++v) {
-    labels.vertex[v] = zones.inRegion[v] ? VertexLabel::Red : VertexLabel::Gray;
-    s.redVertices += zones.inRegion[v];
-  }
-  forEachEdge(m, [&](auto *f, int i, bool boundary) {
-    if (zones.faceRegion[vcg::tri::Index(m, f)] != kZone) return;
-    if (!boundary && zones.faceRegion[vcg::tri::Index(m, f->FFp(i))] != kZone) return;
-    if (differentSurfaces(zones, vcg::tri::Index(m, f->cV(i)),
-                          vcg::tri::Index(m, f->cV((i + 1) % 3)), sameRegionFeatureAngleRad)) {
-      labels.setEdge(f, i, EdgeLabel::Chamfer);
-      ++s.chamferEdges;
+    const bool zone = zones.faceRegion[fi] == kZone;
+    EdgeLabels3 edges{EdgeLabel::Gray, EdgeLabel::Gray, EdgeLabel::Gray};
+    int blue = 0;
+    for (int i = 0; i < 3 && zone; ++i) {
+      const auto *g = f.cFFp(i);
+      const bool boundary = g == &f;
+      if (!boundary && zones.faceRegion[vcg::tri::Index(m, g)] != kZone) continue;
+      if (differentSurfaces(zones, vcg::tri::Index(m, f.cV(i)),
+                            vcg::tri::Index(m, f.cV((i + 1) % 3)), sameRegionFeatureAngleRad)) {
+        edges[i] = EdgeLabel::Chamfer;
+        ++blue;
+        chamferEdges += boundary || &f < g;
+      }
     }
-  });
-  std::tie(s.cornerFaces, s.chamferFaces) = paintCornerAndChamferFaces(m, labels);
+    labels.edge[&f] = edges;
+    labels.face[&f] = blue == 3  ? FaceLabel::Corner
+                      : blue > 0 ? FaceLabel::Chamfer
+                      : zone     ? FaceLabel::Gray
+                                 : FaceLabel::Red;
+    redFaces += !zone;
+    cornerFaces += blue == 3;
+    chamferFaces += blue == 1 || blue == 2;
+  }
+  const std::int64_t nv = std::int64_t(m.vert.size());
+  std::int64_t redVertices = 0;
+#pragma omp parallel for schedule(static, 8192) reduction(+ : redVertices) if (nv > kParallelMin)
+  for (std::int64_t v = 0; v < nv; ++v) {
+    labels.vertex[v] = zones.inRegion[v] ? VertexLabel::Red : VertexLabel::Gray;
+    redVertices += zones.inRegion[v];
+  }
+  FilterStats s;
+  s.redFaces = std::size_t(redFaces);
+  s.redVertices = std::size_t(redVertices);
+  s.chamferEdges = std::size_t(chamferEdges);
+  s.cornerFaces = std::size_t(cornerFaces);
+  s.chamferFaces = std::size_t(chamferFaces);
   return s;
 }
 
@@ -619,12 +717,16 @@ std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::siz
                                 const std::vector<char> &nearSharpEdge, const SharpenOptions &opt,
                                 ExtendedStats &stats) {
   using Scalar = typename MeshType::ScalarType;
-  const VertexFaceTable vf(m);  // after subdivision
+  const auto candidate = [&](std::size_t v) {
+    return !zones.inRegion[v] && zones.vertexLabel[v] >= 0 && nearSharpEdge[v];
+  };
+  std::vector<char> wanted(m.vert.size(), 0);
+  for (std::size_t v = 0; v < originalCount; ++v) wanted[v] = candidate(v);
+  const VertexFaceTable vf(m, wanted);  // after subdivision, of the candidates only
   std::size_t moved = 0;
   for (std::size_t v = 0; v < originalCount; ++v) {
-    if (zones.inRegion[v] || zones.vertexLabel[v] < 0 || vf.degree(v) == 0 || !nearSharpEdge[v])
-      continue;
-    const Plane &pl = zones.support.plane[v];
+    if (!wanted[v] || vf.degree(v) == 0) continue;
+    const Plane &pl = zones.support.plane(v);
     const Vec3 p = positionOf(&m.vert[v]);
     const Vec3 target = p - pl.normal * (pl.normal * (p - pl.point));
     const double step = (target - p).Norm();

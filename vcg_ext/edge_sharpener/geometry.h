@@ -210,10 +210,13 @@ inline double cornerAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
 /// report two coplanar triangles a tenth of their size apart as intersecting; this test lets them
 /// go first.)
 inline bool trianglesApart(const std::array<Vec3, 3> &p, const std::array<Vec3, 3> &q) {
-  double size = 0;
+  // The largest of nine lengths, with one square root (it preserves order).
+  double size2 = 0;
   for (const auto *t : {&p, &q})
-    for (int k = 0; k < 3; ++k) size = std::max(size, ((*t)[k] - (*t)[(k + 1) % 3]).Norm());
-  for (int k = 0; k < 3; ++k) size = std::max(size, (p[k] - q[k]).Norm());
+    for (int k = 0; k < 3; ++k)
+      size2 = std::max(size2, ((*t)[k] - (*t)[(k + 1) % 3]).SquaredNorm());
+  for (int k = 0; k < 3; ++k) size2 = std::max(size2, (p[k] - q[k]).SquaredNorm());
+  const double size = std::sqrt(size2);
   const auto apartAlong = [&](const Vec3 &axis) {
     const double gap = 1e-9 * size * axis.Norm();
     double pLo = p[0] * axis, pHi = pLo, qLo = q[0] * axis, qHi = qLo;

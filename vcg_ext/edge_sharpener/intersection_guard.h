@@ -23,36 +23,18 @@
 #include <cstdint>
 #include <limits>
 #include <vector>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 // (vcglib's algorithm headers need complex.h first)
 #include <vcg/complex/algorithms/clean.h>
 
 #include "mesh_labels.h"
 #include "options.h"
+#include "parallel.h"
 #include "report.h"
 #include "subdivision.h"
 
 namespace edge_sharpener {
 
 namespace detail {
-
-inline int maxThreads() {
-#ifdef _OPENMP
-  return std::max(1, omp_get_max_threads());
-#else
-  return 1;
-#endif
-}
-
-inline int threadNumber() {
-#ifdef _OPENMP
-  return omp_get_thread_num();
-#else
-  return 0;
-#endif
-}
 
 /// Axis-aligned box in double precision: of a point, grown to hold a face
 /// or the faces a moving vertex sweeps.
@@ -133,15 +115,20 @@ bool facesCross(FaceType *f, FaceType *g, Position &&position) {
 }
 
 /// Calls visit(thread, slot, gi) for every face gi of the mesh whose box
-/// overlaps boxes[slot] (once per pair), through a hashed grid of `boxes`
-/// and one pass over the faces that reads only per-vertex cell ranges
-/// (computed once per vertex): near-linear in the mesh size, and cheap for
-/// the faces far from every box. A face's box is the union of
-/// vertexBox(v) over its vertices v (a vertex's position, or the segment it
-/// may move along).
+/// overlaps boxes[slot] (once per pair). A face's box is the union of
+/// vertexBox(v) over its vertices v: the vertex's position, or, where
+/// moving[v], the segment it may move along. `stillExtent` bounds the
+/// extent, along each axis, of every face without a moving vertex (infinity
+/// when unknown).
+///
+/// Near-linear in the mesh size: the boxes go into a hashed grid (cell: their
+/// mean extent) and blocks of 4^3 cells; a vertex is flagged when its
+/// position lies in a block within `stillExtent` of a box. A face of still
+/// vertices that are not all flagged cannot reach a box: it is turned away
+/// after reading three flags. The others look up the cells their box covers.
 template <class MeshType, class VertexBox, class Visit>
 void forEachBoxOverlap(const MeshType &m, const std::vector<FaceBox> &boxes, VertexBox &&vertexBox,
-                       Visit &&visit) {
+                       const std::vector<char> &moving, double stillExtent, Visit &&visit) {
   if (boxes.empty()) return;
   FaceBox all = boxes[0];
   double extentSum = 0;
@@ -159,6 +146,17 @@ void forEachBoxOverlap(const MeshType &m, const std::vector<FaceBox> &boxes, Ver
   // Cell: the mean box extent, at least 2^-20 of the span (cell indices fit in 21 bits).
   double cell = std::max(extentSum / double(boxes.size()), span / double(1 << 20));
   if (!(cell > 0) || !std::isfinite(cell)) cell = 1;
+  // The vertex flags pay where a still face spans at most a few cells.
+  constexpr int kBlockShift = 2;
+  const bool flagVertices = stillExtent >= 0 && stillExtent <= 4 * cell;
+  // How far from a box a vertex of a still face reaching it can lie (with a
+  // margin for rounding); the grid also covers those vertices.
+  const double reach = stillExtent + 1e-6 * (stillExtent + cell);
+  if (flagVertices) {
+    for (int c = 0; c < 3; ++c) all.lo[c] -= reach, all.hi[c] += reach;
+    span += 2 * reach;
+    cell = std::max(cell, span / double(1 << 20));
+  }
   const double inv = 1.0 / cell;
   double top[3];         // extent of `all` in cells
   std::int32_t last[3];  // largest cell index inside `all`
@@ -177,111 +175,178 @@ void forEachBoxOverlap(const MeshType &m, const std::vector<FaceBox> &boxes, Ver
   const auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
     return std::uint64_t(x) | std::uint64_t(y) << 21 | std::uint64_t(z) << 42;
   };
+  const auto hash = [](std::uint64_t k) { return k * 0x9E3779B97F4A7C15ull; };
+  // Occupancy bitmaps, hashed (a collision only costs a look-up): of the
+  // cells the boxes cover, and of the blocks within stillExtent of a box.
   constexpr std::uint64_t kBits = std::uint64_t(1) << 20;
-  const auto bit = [](std::uint64_t k) { return (k * 0x9E3779B97F4A7C15ull) >> 44; };
-  std::vector<std::uint64_t> occupied(kBits / 64, 0);
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;  // (cell key, slot)
-  std::vector<std::uint32_t> oversized;                          // slots in too many cells
+  const auto bit = [&](std::uint64_t k) { return hash(k) >> 44; };
+  const auto isSet = [](const std::vector<std::uint64_t> &bits, std::uint64_t b) {
+    return (bits[b >> 6] >> (b & 63) & 1) != 0;
+  };
+  const auto set = [](std::vector<std::uint64_t> &bits, std::uint64_t b) {
+    bits[b >> 6] |= std::uint64_t(1) << (b & 63);
+  };
+  std::vector<std::uint64_t> occupied(kBits / 64, 0), nearBlock(kBits / 64, 0);
   constexpr std::int64_t kMaxCellsPerBox = 4096, kMaxCellsPerFace = 64;
-  entries.reserve(boxes.size() * 4);
-  for (std::size_t q = 0; q < boxes.size(); ++q) {
-    std::int32_t lo[3], hi[3];
+  // Cells of the box [lo - grow, hi + grow], clamped to the grid.
+  const auto cellRange = [&](const FaceBox &b, double grow, std::int32_t *lo, std::int32_t *hi) {
     std::int64_t cells = 1;
     for (int c = 0; c < 3; ++c) {
-      lo[c] = std::max(cellOf(boxes[q].lo[c], c), 0);
-      hi[c] = std::min(cellOf(boxes[q].hi[c], c), last[c]);
+      lo[c] = std::max(cellOf(b.lo[c] - grow, c), 0);
+      hi[c] = std::min(cellOf(b.hi[c] + grow, c), last[c]);
       cells *= std::int64_t(hi[c]) - lo[c] + 1;
     }
-    if (cells > kMaxCellsPerBox) {
-      oversized.push_back(std::uint32_t(q));
-      continue;
-    }
+    return cells;
+  };
+  const auto forEachCell = [&](const std::int32_t *lo, const std::int32_t *hi, auto &&f) {
     for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
       for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
-        for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
-          const std::uint64_t k = key(x, y, z), b = bit(k);
-          entries.emplace_back(k, std::uint32_t(q));
-          occupied[b >> 6] |= std::uint64_t(1) << (b & 63);
-        }
-  }
-  std::sort(entries.begin(), entries.end());
-  // Open-addressing table: cell key -> first entry of that cell.
-  std::size_t tableSize = 16;
-  while (tableSize < 2 * entries.size()) tableSize *= 2;
-  constexpr std::uint64_t kEmpty = ~std::uint64_t(0);
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> table(tableSize, {kEmpty, 0});
-  const auto slotOfKey = [&](std::uint64_t k) {
-    std::size_t i = std::size_t((k * 0x9E3779B97F4A7C15ull) >> 20) & (tableSize - 1);
-    while (table[i].first != kEmpty && table[i].first != k) i = (i + 1) & (tableSize - 1);
-    return i;
+        for (std::int64_t z = lo[2]; z <= hi[2]; ++z) f(key(x, y, z));
   };
-  for (std::size_t e = 0; e < entries.size(); ++e)
-    if (e == 0 || entries[e].first != entries[e - 1].first)
-      table[slotOfKey(entries[e].first)] = {entries[e].first, std::uint32_t(e)};
-  // Per vertex: lowest cells on the three axes, then highest.
-  std::vector<std::int32_t> vertexCell(6 * m.vert.size(), -1);
-  for (std::size_t v = 0; v < m.vert.size(); ++v)
-    if (!m.vert[v].IsD()) {
-      const FaceBox b = vertexBox(v);
-      for (int c = 0; c < 3; ++c)
-        vertexCell[6 * v + c] = cellOf(b.lo[c], c), vertexCell[6 * v + 3 + c] = cellOf(b.hi[c], c);
+  const auto blockRange = [&](const std::int32_t *lo, const std::int32_t *hi, std::int32_t *blockLo,
+                              std::int32_t *blockHi) {
+    for (int c = 0; c < 3; ++c)
+      blockLo[c] = lo[c] >> kBlockShift, blockHi[c] = hi[c] >> kBlockShift;
+  };
+  // Entries (cell key, slot) bucketed by the cell's hash: a counting sort,
+  // slots in increasing order within each bucket.
+  std::vector<std::uint32_t> oversized;  // slots in too many cells: tested by every face
+  std::vector<char> isOversized(boxes.size(), 0);
+  std::size_t cellCount = 0;
+  for (std::size_t q = 0; q < boxes.size(); ++q) {
+    std::int32_t lo[3], hi[3];
+    const std::int64_t cells = cellRange(boxes[q], 0, lo, hi);
+    if (cells > kMaxCellsPerBox) {
+      oversized.push_back(std::uint32_t(q));
+      isOversized[q] = 1;
+      continue;
     }
+    cellCount += std::size_t(cells);
+  }
+  std::size_t bucketCount = 16;
+  int bucketBits = 4;
+  while (bucketCount < cellCount) bucketCount *= 2, ++bucketBits;
+  const auto bucketOf = [&](std::uint64_t k) { return std::size_t(hash(k) >> (64 - bucketBits)); };
+  std::vector<std::uint32_t> bucketStart(bucketCount + 1, 0);
+  for (std::size_t q = 0; q < boxes.size(); ++q) {
+    if (isOversized[q]) continue;
+    std::int32_t lo[3], hi[3], blockLo[3], blockHi[3];
+    cellRange(boxes[q], 0, lo, hi);
+    forEachCell(lo, hi, [&](std::uint64_t k) {
+      ++bucketStart[bucketOf(k) + 1];
+      set(occupied, bit(k));
+    });
+    if (!flagVertices) continue;
+    cellRange(boxes[q], reach, lo, hi);
+    blockRange(lo, hi, blockLo, blockHi);
+    forEachCell(blockLo, blockHi, [&](std::uint64_t k) { set(nearBlock, bit(k)); });
+  }
+  for (std::size_t b = 0; b < bucketCount; ++b) bucketStart[b + 1] += bucketStart[b];
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries(cellCount);
+  {
+    std::vector<std::uint32_t> fill(bucketStart.begin(), bucketStart.end() - 1);
+    for (std::size_t q = 0; q < boxes.size(); ++q) {
+      if (isOversized[q]) continue;
+      std::int32_t lo[3], hi[3];
+      cellRange(boxes[q], 0, lo, hi);
+      forEachCell(lo, hi, [&](std::uint64_t k) {
+        entries[fill[bucketOf(k)]++] = {k, std::uint32_t(q)};
+      });
+    }
+  }
+  // Per vertex: 1 where it moves, 2 where it lies in a block near a box
+  // (3: both); without the flags, every face looks its cells up.
+  constexpr char kMoving = 1, kNear = 2;
+  const std::int64_t vertexCount = std::int64_t(m.vert.size());
+  std::vector<char> flag(m.vert.size(), kNear);
+  if (flagVertices) {
+#pragma omp parallel for schedule(static, 8192) if (vertexCount > kParallelMin)
+    for (std::int64_t v = 0; v < vertexCount; ++v) {
+      if (m.vert[v].IsD()) continue;
+      if (moving[v]) {
+        flag[v] = kMoving;
+        continue;
+      }
+      const Vec3 p = positionOf(&m.vert[v]);
+      std::int32_t block[3];
+      bool inside = true;
+      for (int c = 0; c < 3; ++c) {
+        const std::int32_t k = cellOf(p[c], c);
+        inside &= k >= 0 && k <= last[c];
+        block[c] = k >> kBlockShift;
+      }
+      flag[v] = inside && isSet(nearBlock, bit(key(block[0], block[1], block[2]))) ? kNear : 0;
+    }
+  }
 
   // The pass over the faces runs on every core; each thread keeps its own
   // once-per-pair stamps and tells `visit` its number.
-  constexpr std::size_t kParallelMin = 50000;
-  const int threads = m.face.size() >= kParallelMin ? maxThreads() : 1;
+  const int threads = std::int64_t(m.face.size()) >= kParallelMin ? maxThreads() : 1;
   std::vector<std::vector<std::uint32_t>> stamps(
       threads, std::vector<std::uint32_t>(boxes.size(), std::numeric_limits<std::uint32_t>::max()));
   const std::int64_t faceCount = std::int64_t(m.face.size());
 #pragma omp parallel for schedule(static, 8192) num_threads(threads)
   for (std::int64_t gi = 0; gi < faceCount; ++gi) {
-    const int thread = threadNumber();
-    std::vector<std::uint32_t> &stamp = stamps[thread];
     const auto &g = m.face[gi];
     if (g.IsD()) continue;
-    bool haveBox = false;
-    FaceBox gb;
+    const std::size_t v[3] = {vcg::tri::Index(m, g.cV(0)), vcg::tri::Index(m, g.cV(1)),
+                              vcg::tri::Index(m, g.cV(2))};
+    const char any = flag[v[0]] | flag[v[1]] | flag[v[2]];
+    const char every = flag[v[0]] & flag[v[1]] & flag[v[2]];
+    if (!(any & kMoving) && !(every & kNear) && oversized.empty()) continue;
+    const int thread = threadNumber();
+    std::vector<std::uint32_t> &stamp = stamps[thread];
+    FaceBox gb = vertexBox(v[0]);
+    for (int k = 1; k < 3; ++k) gb.unite(vertexBox(v[k]));
     const auto test = [&](std::uint32_t q) {
       if (stamp[q] == gi) return;
       stamp[q] = std::uint32_t(gi);
-      if (!haveBox) {
-        gb = vertexBox(vcg::tri::Index(m, g.cV(0)));
-        for (int k = 1; k < 3; ++k) gb.unite(vertexBox(vcg::tri::Index(m, g.cV(k))));
-        haveBox = true;
-      }
       if (gb.overlaps(boxes[q])) visit(thread, q, std::uint32_t(gi));
     };
     for (const std::uint32_t q : oversized) test(q);
     std::int32_t lo[3], hi[3];
-    std::int64_t cells = 1;
+    const std::int64_t cells = cellRange(gb, 0, lo, hi);
     bool outside = false;
-    const std::int32_t *c0 = &vertexCell[6 * vcg::tri::Index(m, g.cV(0))];
-    const std::int32_t *c1 = &vertexCell[6 * vcg::tri::Index(m, g.cV(1))];
-    const std::int32_t *c2 = &vertexCell[6 * vcg::tri::Index(m, g.cV(2))];
-    for (int c = 0; c < 3; ++c) {
-      lo[c] = std::max(std::min({c0[c], c1[c], c2[c]}), 0);
-      hi[c] = std::min(std::max({c0[3 + c], c1[3 + c], c2[3 + c]}), last[c]);
-      outside |= lo[c] > hi[c];
-      cells *= std::int64_t(hi[c]) - lo[c] + 1;
-    }
+    for (int c = 0; c < 3; ++c) outside |= lo[c] > hi[c];
     if (outside) continue;
     if (cells > kMaxCellsPerFace) {
       for (std::size_t q = 0; q < boxes.size(); ++q) test(std::uint32_t(q));
       continue;
     }
-    for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
-      for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
-        for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
-          const std::uint64_t k = key(x, y, z), b = bit(k);
-          if (!(occupied[b >> 6] >> (b & 63) & 1)) continue;
-          const auto &found = table[slotOfKey(k)];
-          if (found.first != k) continue;
-          for (std::size_t e = found.second; e < entries.size() && entries[e].first == k; ++e)
-            test(entries[e].second);
-        }
+    forEachCell(lo, hi, [&](std::uint64_t k) {
+      if (!isSet(occupied, bit(k))) return;
+      const std::size_t b = bucketOf(k);
+      for (std::uint32_t e = bucketStart[b]; e < bucketStart[b + 1]; ++e)
+        if (entries[e].first == k) test(entries[e].second);
+    });
   }
 }
+
+/// For each of n query slots, a sorted list of face indices (compressed rows).
+struct NearLists {
+  std::vector<std::uint32_t> offset, face;
+  const std::uint32_t *begin(std::size_t q) const { return face.data() + offset[q]; }
+  const std::uint32_t *end(std::size_t q) const { return face.data() + offset[q + 1]; }
+
+  /// From per-thread lists of (slot, face) pairs; the result does not
+  /// depend on how the pairs were split among threads.
+  static NearLists fromPairs(
+      std::size_t n,
+      const std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> &pairs) {
+    NearLists near;
+    near.offset.assign(n + 1, 0);
+    for (const auto &list : pairs)
+      for (const auto &[q, gi] : list) ++near.offset[q + 1];
+    for (std::size_t q = 0; q < n; ++q) near.offset[q + 1] += near.offset[q];
+    near.face.resize(near.offset[n]);
+    std::vector<std::uint32_t> fill(near.offset.begin(), near.offset.end() - 1);
+    for (const auto &list : pairs)
+      for (const auto &[q, gi] : list) near.face[fill[q]++] = gi;
+    for (std::size_t q = 0; q < n; ++q)
+      std::sort(near.face.begin() + near.offset[q], near.face.begin() + near.offset[q + 1]);
+    return near;
+  }
+};
 
 }  // namespace detail
 
@@ -340,18 +405,42 @@ IntersectionStats revertSelfIntersections(
   }
   if (movedCount == 0) return s;
 
-  // Faces of the moved vertices, and for each moved vertex its faces (CSR).
+  // Faces of the moved vertices (in face order), and for each moved vertex
+  // its faces (CSR); and the largest extent of the other faces along an
+  // axis (for forEachBoxOverlap()).
   std::vector<std::uint32_t> query, offset(m.vert.size() + 1, 0), incident;
-  for (std::size_t fi = 0; fi < m.face.size(); ++fi) {
-    const auto &f = m.face[fi];
-    if (f.IsD()) continue;
-    bool any = false;
-    for (int k = 0; k < 3; ++k) {
-      const std::size_t v = vcg::tri::Index(m, f.cV(k));
-      if (moved[v]) ++offset[v + 1], any = true;
+  double stillExtent = 0;
+  {
+    const std::int64_t nf = std::int64_t(m.face.size());
+    const int threads = nf >= kParallelMin ? detail::maxThreads() : 1;
+    std::vector<std::vector<std::uint32_t>> parts(threads);
+#pragma omp parallel num_threads(threads) reduction(max : stillExtent)
+    {
+      std::vector<std::uint32_t> &part = parts[detail::threadNumber()];
+#pragma omp for schedule(static, 8192)
+      for (std::int64_t fi = 0; fi < nf; ++fi) {
+        const auto &f = m.face[fi];
+        if (f.IsD()) continue;
+        bool any = false;
+        for (int k = 0; k < 3; ++k) any |= moved[vcg::tri::Index(m, f.cV(k))] != 0;
+        if (any) {
+          part.push_back(std::uint32_t(fi));
+          continue;
+        }
+        const Vec3 p0 = positionOf(f.cV(0)), p1 = positionOf(f.cV(1)), p2 = positionOf(f.cV(2));
+        for (int c = 0; c < 3; ++c)
+          stillExtent = std::max(stillExtent,
+                                 std::max({p0[c], p1[c], p2[c]}) - std::min({p0[c], p1[c], p2[c]}));
+      }
     }
-    if (any) query.push_back(std::uint32_t(fi));
+    for (const auto &part : parts) query.insert(query.end(), part.begin(), part.end());
+    std::sort(query.begin(), query.end());
   }
+  for (const std::uint32_t fi : query)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t v = vcg::tri::Index(m, m.face[fi].cV(k));
+      if (moved[v]) ++offset[v + 1];
+    }
   for (std::size_t v = 0; v + 1 < offset.size(); ++v) offset[v + 1] += offset[v];
   incident.resize(offset.back());
   {
@@ -362,6 +451,7 @@ IntersectionStats revertSelfIntersections(
         if (moved[v]) incident[fill[v]++] = fi;
       }
   }
+  if (!std::isfinite(stillExtent)) stillExtent = std::numeric_limits<double>::infinity();
   const auto restOf = [&](std::size_t v) {
     return v >= n0 ? Coord::Construct(plan.inserted[v - n0].rest) : originalRest[v];
   };
@@ -388,7 +478,7 @@ IntersectionStats revertSelfIntersections(
   // Moved vertices only ever go back along the segment to rest, so a face
   // can only meet the faces its swept box (placed and rest positions of its
   // vertices) overlaps: one pass over the mesh finds them for all rounds.
-  const std::vector<std::vector<std::uint32_t>> nearOfQuery = [&] {
+  const detail::NearLists nearOfQuery = [&] {
     std::vector<detail::FaceBox> boxes;
     boxes.reserve(query.size());
     const auto sweptBox = [&](std::size_t v) {
@@ -402,15 +492,11 @@ IntersectionStats revertSelfIntersections(
       boxes.push_back(b);
     }
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> hits(detail::maxThreads());
-    detail::forEachBoxOverlap(m, boxes, sweptBox,
+    detail::forEachBoxOverlap(m, boxes, sweptBox, moved, stillExtent,
                               [&](int thread, std::uint32_t q, std::uint32_t gi) {
                                 if (gi != query[q]) hits[thread].emplace_back(q, gi);
                               });
-    std::vector<std::vector<std::uint32_t>> near(query.size());
-    for (const auto &list : hits)
-      for (const auto &[q, gi] : list) near[q].push_back(gi);
-    for (auto &list : near) std::sort(list.begin(), list.end());  // any thread count: same lists
-    return near;
+    return detail::NearLists::fromPairs(query.size(), hits);
   }();
   // Slot of each face of a moved vertex in nearOfQuery.
   std::vector<std::uint32_t> querySlot(m.face.size(), 0);
@@ -428,7 +514,9 @@ IntersectionStats revertSelfIntersections(
 #pragma omp parallel for schedule(dynamic, 64) if (count >= 4096)
     for (std::int64_t r = 0; r < count; ++r) {
       const std::uint32_t fi = faces[r];
-      for (const std::uint32_t gi : nearOfQuery[querySlot[fi]]) {
+      const std::uint32_t q = querySlot[fi];
+      for (const std::uint32_t *near = nearOfQuery.begin(q); near != nearOfQuery.end(q); ++near) {
+        const std::uint32_t gi = *near;
         if (inRound[gi] && gi < fi) continue;  // a pair of this round's faces: tested once
         const Contact contact = contactOf(fi, gi);
         if (contact == Contact::None) continue;
@@ -506,8 +594,8 @@ IntersectionStats revertSelfIntersections(
     for (std::size_t r = 0; r < vertices.size(); ++r) {
       const std::size_t v = vertices[r];
       for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
-        const auto &list = nearOfQuery[querySlot[incident[j]]];
-        near[r].insert(near[r].end(), list.begin(), list.end());
+        const std::uint32_t q = querySlot[incident[j]];
+        near[r].insert(near[r].end(), nearOfQuery.begin(q), nearOfQuery.end(q));
       }
       std::sort(near[r].begin(), near[r].end());
       near[r].erase(std::unique(near[r].begin(), near[r].end()), near[r].end());

@@ -45,18 +45,38 @@ std::vector<Vec3> computeSupportNormals(MeshType &m, MeshLabels<MeshType> &label
   return normal;
 }
 
+/// One support plane and, for the extended method, how the region it was
+/// fitted to departs from it there.
+struct SupportFit {
+  Plane plane{Vec3(0, 0, 0), Vec3(0, 0, 0)};  ///< zero normal: no plane
+  /// Largest angle between the plane's normal and the normals of the region
+  /// faces it was fitted to (extended method).
+  double spreadRad = 0;
+  /// Scatter of the fitted faces' normals and centroids about the plane
+  /// (geometry.h: extrapolationBend), and of their normal deviations.
+  CrossScatter3 normalScatter, pointScatter, normalSelfScatter;
+
+  /// A plane without measures.
+  static SupportFit of(const Plane &plane, double spreadRad = 0) {
+    SupportFit fit;
+    fit.plane = plane;
+    fit.spreadRad = spreadRad;
+    return fit;
+  }
+};
+
 /// The plane extrapolated from the smooth region next to each original
 /// vertex (zero normal: none), and how curved that region is there.
+/// Sparse: only the vertices near a feature have a plane, and zone vertices
+/// share their anchor's, so each vertex holds an index into `fits`.
 struct SupportPlanes {
-  std::vector<Plane> plane;
-  /// Largest angle between the plane's normal and the normals of the region
-  /// faces it was fitted to; empty when not measured (the paper's method).
-  std::vector<double> spreadRad;
-  /// Extended method: scatter of the fitted faces' normals and centroids
-  /// about the plane (geometry.h: extrapolationBend); empty otherwise.
-  std::vector<CrossScatter3> normalScatter, pointScatter;
-  /// Extended method: scatter of the fitted faces' normal deviations.
-  std::vector<CrossScatter3> normalSelfScatter;
+  static constexpr std::uint32_t kNoFit = ~std::uint32_t(0);
+  /// Per vertex: its entry in `fits`, or kNoFit.
+  std::vector<std::uint32_t> fitOf;
+  std::vector<SupportFit> fits;
+  /// Extended method: the fits carry spread and scatters (placement's
+  /// curvature tests read them); false for the paper's method.
+  bool measured = false;
   /// Extended method: the region each vertex's plane belongs to (-1: none)...
   std::vector<int> region;
   /// ...and, for vertices next to the feature zone, vertices holding the
@@ -71,32 +91,24 @@ struct SupportPlanes {
   /// from its own plane; empty otherwise.
   std::vector<double> offPlane;
 
-  /// Extended method: n vertices with no plane and zero measures.
-  void resetMeasured(std::size_t n) {
-    plane.assign(n, Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)});
-    spreadRad.assign(n, 0.0);
-    normalScatter.assign(n, CrossScatter3{});
-    pointScatter.assign(n, CrossScatter3{});
-    normalSelfScatter.assign(n, CrossScatter3{});
+  /// n vertices without a plane.
+  void reset(std::size_t n) {
+    fitOf.assign(n, kNoFit);
+    fits.clear();
   }
-  /// Extended method: vertex v takes a fitted plane and its measures (`fit`
-  /// has the same fields: feature_zones.h, RegionPlaneFit).
-  template <class Fit>
-  void storeMeasured(std::size_t v, const Fit &fit) {
-    plane[v] = fit.plane;
-    spreadRad[v] = fit.spreadRad;
-    normalScatter[v] = fit.normalScatter;
-    pointScatter[v] = fit.pointScatter;
-    normalSelfScatter[v] = fit.normalSelfScatter;
+  /// Vertex v's plane and measures (all zero when it has none).
+  const SupportFit &fit(std::size_t v) const {
+    static const SupportFit none{};
+    return fitOf[v] == kNoFit ? none : fits[fitOf[v]];
   }
-  /// Extended method: vertex `to` takes the plane and measures of `from`.
-  void copyMeasured(std::size_t to, std::size_t from) {
-    plane[to] = plane[from];
-    spreadRad[to] = spreadRad[from];
-    normalScatter[to] = normalScatter[from];
-    pointScatter[to] = pointScatter[from];
-    normalSelfScatter[to] = normalSelfScatter[from];
+  const Plane &plane(std::size_t v) const { return fit(v).plane; }
+  /// Vertex v takes a new entry.
+  void setFit(std::size_t v, const SupportFit &f) {
+    fitOf[v] = std::uint32_t(fits.size());
+    fits.push_back(f);
   }
+  /// Vertex `to` takes the plane and measures of `from`.
+  void shareFit(std::size_t to, std::size_t from) { fitOf[to] = fitOf[from]; }
 };
 
 /// The paper's support planes: through each original vertex, orthogonal to
@@ -114,9 +126,9 @@ SupportPlanes paperSupportPlanes(MeshType &m, MeshLabels<MeshType> &labels) {
   }
   const std::vector<Vec3> normal = computeSupportNormals(m, labels, &wanted);
   SupportPlanes support;
-  support.plane.resize(normal.size());
+  support.reset(normal.size());
   for (std::size_t i = 0; i < normal.size(); ++i)
-    support.plane[i] = Plane{positionOf(&m.vert[i]), normal[i]};
+    if (wanted[i]) support.setFit(i, SupportFit::of(Plane{positionOf(&m.vert[i]), normal[i]}));
   return support;
 }
 
@@ -148,12 +160,12 @@ inline bool flankBendsAway(const InsertedVertexSource &src, const Plane *planes,
     if (!(d > 0)) continue;
     // Below this spread the regression mostly sees marching-cubes noise,
     // unless the normals follow position cleanly (a finely sampled curve).
-    if (support.spreadRad[v] < opt.minBendSpreadRad &&
-        curveFitQuality(support.normalScatter[v], support.pointScatter[v],
-                        support.normalSelfScatter[v], w / d) < opt.minBendFitQuality)
+    const SupportFit &fit = support.fit(v);
+    if (fit.spreadRad < opt.minBendSpreadRad &&
+        curveFitQuality(fit.normalScatter, fit.pointScatter, fit.normalSelfScatter, w / d) <
+            opt.minBendFitQuality)
       continue;
-    if (extrapolationBend(support.normalScatter[v], support.pointScatter[v], w / d, d) > allowed)
-      return true;
+    if (extrapolationBend(fit.normalScatter, fit.pointScatter, w / d, d) > allowed) return true;
   }
   return false;
 }
@@ -198,7 +210,7 @@ inline bool passesIntermediateRegion(const InsertedVertexSource &src, const Plan
     for (std::uint32_t u : support.nearby[src.original[i]]) {
       if (u == SupportPlanes::kNoVertex) break;
       if (isFlank(support.region[u])) continue;
-      const Plane &l = support.plane[u];
+      const Plane &l = support.plane(u);
       bool between = false;
       for (int a = 0; a < flankPairCount(src); ++a)
         between |= normalBetween(planes[a].normal, planes[(a + 1) % n].normal, l.normal,
@@ -216,18 +228,18 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
                                   const SharpenOptions &opt, Vec3 &target) {
   Plane planes[3];
   for (int i = 0; i < src.originalCount; ++i) {
-    planes[i] = support.plane[src.original[i]];
+    planes[i] = support.plane(src.original[i]);
     if (planes[i].normal.SquaredNorm() == 0) return Placement::NoSupportPlane;
   }
   const int pairs = detail::flankPairCount(src);
-  if (!support.spreadRad.empty() && opt.maxSupportSpreadRatio > 0) {
+  if (support.measured && opt.maxSupportSpreadRatio > 0) {
     // A region that turns as much near the feature as the feature itself is
     // a blend or a facetted curve, not the flank of a sharp edge.
     for (int i = 0; i < pairs; ++i) {
       const int j = (i + 1) % src.originalCount;
       const double theta = angleBetween(planes[i].normal, planes[j].normal);
       const double spread =
-          std::max(support.spreadRad[src.original[i]], support.spreadRad[src.original[j]]);
+          std::max(support.fit(src.original[i]).spreadRad, support.fit(src.original[j]).spreadRad);
       if (spread > opt.maxSupportSpreadRatio * theta) return Placement::CurvedSupport;
     }
   }
@@ -248,7 +260,7 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
     if (!x) return Placement::CoplanarNormals;
     target = *x;
   }
-  if (!support.normalScatter.empty() && opt.maxBendFraction >= 0 &&
+  if (support.measured && opt.maxBendFraction >= 0 &&
       (detail::flankBendsAway(src, planes, support, opt, target) ||
        detail::cornerPairBendsAway(src, planes, support, opt)))
     return Placement::CurvedSupport;
