@@ -1,16 +1,16 @@
 // Preconditions of Edge-Sharpener, checked before anything is modified.
 #pragma once
 
+#include <vcg/complex/complex.h>
+#include <vcg/simplex/face/pos.h>
+#include <vcg/simplex/face/topology.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
-
-#include <vcg/complex/complex.h>
-#include <vcg/simplex/face/pos.h>
-#include <vcg/simplex/face/topology.h>
 
 #include "fast_topology.h"
 
@@ -63,16 +63,32 @@ std::string findInputProblem(MeshType &m) {
     return "mesh has deleted elements; compact it first";
   if (m.fn == 0)
     return m.vn == 0 ? "mesh is empty" : "mesh has no faces (a point cloud cannot be sharpened)";
-  for (std::size_t i = 0; i < m.vert.size(); ++i) {
+  // The first offending vertex and face are named (a min-reduction, the
+  // same for any thread count).
+  const std::int64_t nv = std::int64_t(m.vert.size());
+  std::int64_t firstNonFinite = nv;
+#pragma omp parallel for schedule(static, 8192) reduction(min \
+                                                          : firstNonFinite) if (nv > kParallelMin)
+  for (std::int64_t i = 0; i < nv; ++i) {
     const auto &p = m.vert[i].cP();
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      return "vertex " + std::to_string(i) + " has a NaN or infinite coordinate";
+      firstNonFinite = std::min(firstNonFinite, i);
   }
-  for (std::size_t i = 0; i < m.face.size(); ++i) {
+  if (firstNonFinite < nv)
+    return "vertex " + std::to_string(firstNonFinite) + " has a NaN or infinite coordinate";
+  const std::int64_t faceCount = std::int64_t(m.face.size());
+  std::int64_t firstRepeat = faceCount;
+#pragma omp parallel for schedule(static, 8192) \
+    reduction(min                               \
+              : firstRepeat) if (faceCount > kParallelMin)
+  for (std::int64_t i = 0; i < faceCount; ++i) {
     const auto &f = m.face[i];
     if (f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(2) == f.cV(0))
-      return "face " + std::to_string(i) + " repeats a vertex (remove duplicated vertices/faces first)";
+      firstRepeat = std::min(firstRepeat, i);
   }
+  if (firstRepeat < faceCount)
+    return "face " + std::to_string(firstRepeat) +
+           " repeats a vertex (remove duplicated vertices/faces first)";
   buildFaceFace(m);
   // An edge is manifold when its FF ring has at most two faces; the first
   // face (lowest index) with a non-manifold edge is named. (Not
@@ -81,13 +97,17 @@ std::string findInputProblem(MeshType &m) {
   const std::int64_t nf = std::int64_t(m.face.size());
   std::int64_t firstNonManifold = nf;
   int misoriented = 0;
-#pragma omp parallel for schedule(static, 8192) reduction(min : firstNonManifold) \
-    reduction(max : misoriented) if (nf > kParallelMin)
+#pragma omp parallel for schedule(static, 8192) reduction(min                 \
+                                                          : firstNonManifold) \
+    reduction(max                                                             \
+              : misoriented) if (nf > kParallelMin)
   for (std::int64_t i = 0; i < nf; ++i) {
     auto &f = m.face[i];
     for (int j = 0; j < 3; ++j) {
-      if (!vcg::face::IsManifold(f, j)) firstNonManifold = std::min(firstNonManifold, i);
-      else if (!vcg::face::CheckOrientation(f, j)) misoriented = 1;
+      if (!vcg::face::IsManifold(f, j))
+        firstNonManifold = std::min(firstNonManifold, i);
+      else if (!vcg::face::CheckOrientation(f, j))
+        misoriented = 1;
     }
   }
   if (firstNonManifold < nf)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <vcg/complex/complex.h>
+// (vcglib's algorithm headers need complex.h first)
 #include <vcg/complex/algorithms/update/normal.h>
 
 #include "../cleanup.h"
@@ -26,10 +27,14 @@ inline void reportProgress(const SharpenOptions &opt, int percent, const char *s
 template <class MeshType>
 double longestEdgeLength(MeshType &m) {
   double longest2 = 0;
-  for (auto &f : m.face) {
+  const std::int64_t nf = std::int64_t(m.face.size());
+#pragma omp parallel for schedule(static, 8192) reduction(max : longest2) if (nf > kParallelMin)
+  for (std::int64_t fi = 0; fi < nf; ++fi) {
+    const auto &f = m.face[fi];
     if (f.IsD()) continue;
     for (int i = 0; i < 3; ++i)
-      longest2 = std::max(longest2, (positionOf(f.cV(i)) - positionOf(f.cV((i + 1) % 3))).SquaredNorm());
+      longest2 =
+          std::max(longest2, (positionOf(f.cV(i)) - positionOf(f.cV((i + 1) % 3))).SquaredNorm());
   }
   return std::sqrt(longest2);
 }
@@ -153,15 +158,14 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
     const auto &v = m.vert[plan.originalVertexCount + k];
     if (v.IsD()) continue;
     ++report.placement.byOutcome[int(labels.placement[&v])];
-    report.placement.maxDisplacement = std::max(
-        report.placement.maxDisplacement, (positionOf(&v) - plan.inserted[k].rest).Norm());
+    report.placement.maxDisplacement =
+        std::max(report.placement.maxDisplacement, (positionOf(&v) - plan.inserted[k].rest).Norm());
   }
 
   if (opt.colorize) colorize(m, labels);
   Alloc::CompactEveryVector(m);
   if (vcg::tri::HasPerFaceNormal(m)) vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(m);
-  if (vcg::tri::HasPerVertexNormal(m))
-    vcg::tri::UpdateNormal<MeshType>::PerVertexNormalized(m);
+  if (vcg::tri::HasPerVertexNormal(m)) vcg::tri::UpdateNormal<MeshType>::PerVertexNormalized(m);
   report.outputVertices = m.vert.size();
   report.outputFaces = m.face.size();
   detail::reportProgress(opt, 100, "Edge-Sharpener: done");
