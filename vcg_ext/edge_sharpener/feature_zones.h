@@ -62,7 +62,8 @@ void forEachNeighbour(const MeshType &m, const VertexFaceTable &vf, std::size_t 
 /// smooth edges that hold one of the paper's core faces (filters 1-2), one id
 /// per component, then returns to the zone every region thinner than `minDepth` hops
 /// (a corridor of smooth triangles, e.g. a wide but regular chamfer band).
-/// \pre labelSmoothEdges() ran. Writes labels.vertex/face like filters 1-2.
+/// \pre labelSmoothEdges() ran; m is compact (no deleted faces).
+/// Writes labels.vertex/face like filters 1-2.
 template <class MeshType>
 void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceTable &vf,
                     int minDepth, FeatureZones &zones, ExtendedStats &stats) {
@@ -94,17 +95,21 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
   // smaller root, halving points to smaller faces), so one pass in face order
   // points every face at its root; the root's entry of faceRegion holds the
   // region id until the second pass copies it to the component.
+  // (The mesh is compact here: no face is deleted, and these passes read
+  // labels and parents only, never the faces themselves.)
   zones.faceRegion.assign(nf, kZone);
   int regions = 0;
   for (std::size_t fi = 0; fi < nf; ++fi) {
     parent[fi] = parent[parent[fi]];
-    if (!m.face[fi].IsD() && labels.face[&m.face[fi]] == FaceLabel::Red) {
+    if (labels.face[fi] == FaceLabel::Red) {
       int &id = zones.faceRegion[parent[fi]];
       if (id == kZone) id = regions++;
     }
   }
-  for (std::size_t fi = 0; fi < nf; ++fi)
-    if (!m.face[fi].IsD() && parent[fi] != fi) zones.faceRegion[fi] = zones.faceRegion[parent[fi]];
+  const std::int64_t faceCount = std::int64_t(nf);
+#pragma omp parallel for schedule(static, 8192) if (faceCount > kParallelMin)
+  for (std::int64_t fi = 0; fi < faceCount; ++fi)
+    if (parent[fi] != fi) zones.faceRegion[fi] = zones.faceRegion[parent[fi]];
 
   // Depth of each region's vertices from the region's border, in hops.
   // Interior vertices (all faces in one region, no border edge) first, on
@@ -152,11 +157,14 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
     if (maxDepth[r] >= minDepth) renumber[r] = kept++;
   stats.regions = std::size_t(kept);
   stats.corridors = std::size_t(regions - kept);
-  for (std::size_t f = 0; f < m.face.size(); ++f) {
+  std::int64_t zoneFaces = 0;
+#pragma omp parallel for schedule(static, 8192) reduction(+ : zoneFaces) if (faceCount > kParallelMin)
+  for (std::int64_t f = 0; f < faceCount; ++f) {
     int &r = zones.faceRegion[f];
     if (r != kZone) r = renumber[r];
-    stats.zoneFaces += r == kZone && !m.face[f].IsD();
+    zoneFaces += r == kZone;
   }
+  stats.zoneFaces += std::size_t(zoneFaces);
 }
 
 /// Returns to the zone every region face incident to a marked vertex.
@@ -182,8 +190,10 @@ inline std::size_t openFacesAround(const VertexFaceTable &vf, const std::vector<
 /// \return the number of faces returned to the zone.
 template <class MeshType>
 std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, FeatureZones &zones) {
-  std::vector<char> contact(m.vert.size(), 0);
-  for (std::size_t v = 0; v < m.vert.size(); ++v) {
+  const std::int64_t nv = std::int64_t(m.vert.size());
+  std::vector<char> contact(nv, 0);
+#pragma omp parallel for schedule(static, 8192) if (nv > kParallelMin)
+  for (std::int64_t v = 0; v < nv; ++v) {
     int seen = kZone;
     for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
       const int r = zones.faceRegion[*fi];
@@ -205,20 +215,32 @@ template <class MeshType>
 std::size_t openInternalCreases(const MeshType &m, const MeshLabels<MeshType> &labels,
                                 const VertexFaceTable &vf, double minAngleRad,
                                 FeatureZones &zones) {
-  std::vector<char> crease(m.vert.size(), 0);
-  for (const auto &f : m.face) {
-    if (f.IsD()) continue;
-    const int r = zones.faceRegion[vcg::tri::Index(m, &f)];
-    if (r == kZone) continue;
-    for (int i = 0; i < 3; ++i) {
-      const auto *g = f.cFFp(i);
-      if (g == &f || labels.edge[&f][i] == EdgeLabel::Smooth) continue;
-      if (zones.faceRegion[vcg::tri::Index(m, g)] != r) continue;
-      if (angleBetween(labels.normal[&f], labels.normal[g]) <= minAngleRad) continue;
-      crease[vcg::tri::Index(m, f.cV(i))] = 1;
-      crease[vcg::tri::Index(m, f.cV((i + 1) % 3))] = 1;
+  // On every core; each thread lists the crease edges it finds.
+  const std::int64_t nf = std::int64_t(m.face.size());
+  const int threads = nf > kParallelMin ? detail::maxThreads() : 1;
+  std::vector<std::vector<std::uint32_t>> found(threads);
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<std::uint32_t> &ends = found[detail::threadNumber()];
+#pragma omp for schedule(static, 8192)
+    for (std::int64_t fi = 0; fi < nf; ++fi) {
+      const auto &f = m.face[fi];
+      if (f.IsD()) continue;
+      const int r = zones.faceRegion[fi];
+      if (r == kZone) continue;
+      for (int i = 0; i < 3; ++i) {
+        const auto *g = f.cFFp(i);
+        if (g == &f || labels.edge[&f][i] == EdgeLabel::Smooth) continue;
+        if (zones.faceRegion[vcg::tri::Index(m, g)] != r) continue;
+        if (angleBetween(labels.normal[&f], labels.normal[g]) <= minAngleRad) continue;
+        ends.push_back(std::uint32_t(vcg::tri::Index(m, f.cV(i))));
+        ends.push_back(std::uint32_t(vcg::tri::Index(m, f.cV((i + 1) % 3))));
+      }
     }
   }
+  std::vector<char> crease(m.vert.size(), 0);
+  for (const auto &ends : found)
+    for (const std::uint32_t v : ends) crease[v] = 1;
   return openFacesAround(vf, crease, zones);
 }
 
@@ -377,31 +399,50 @@ template <class MeshType>
 std::size_t returnTurnedBorderFaces(const MeshType &m, const MeshLabels<MeshType> &labels,
                                     const VertexFaceTable &vf, const SharpenOptions &opt,
                                     double maxTurnRad, FeatureZones &zones) {
-  std::vector<char> turned(m.face.size(), 0);
-  std::vector<int> stamp(m.face.size(), -1);
-  int stampValue = 0;
-  std::vector<int> regionsAtVertex;
   const std::vector<char> touchesZone = verticesTouchingZone(m, vf, zones);
   const PlaneFitSettings fitSettings = PlaneFitSettings::from(opt, touchesZone);
-  for (std::size_t v = 0; v < m.vert.size(); ++v) {
-    if (!touchesZone[v]) continue;
-    regionsAtVertex.clear();
-    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
-      const int r = zones.faceRegion[*fi];
-      if (r != kZone &&
-          std::find(regionsAtVertex.begin(), regionsAtVertex.end(), r) == regionsAtVertex.end())
-        regionsAtVertex.push_back(r);
-    }
-    for (const int r : regionsAtVertex) {
-      const RegionPlaneFit fit =
-          fitRegionPlane(m, vf, zones, v, r, fitSettings, stamp, stampValue++);
-      if (fit.plane.normal.SquaredNorm() == 0) continue;
-      for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
-        if (zones.faceRegion[*fi] == r &&
-            angleBetween(labels.normal[&m.face[*fi]], fit.plane.normal) > maxTurnRad)
-          turned[*fi] = 1;
+  std::vector<std::uint32_t> border;
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    if (touchesZone[v]) border.push_back(std::uint32_t(v));
+  // Every fit reads the regions as they are before this stage, so the border
+  // vertices are independent: on every core, each thread with its own visit
+  // stamps and its own list of turned faces.
+  const std::int64_t count = std::int64_t(border.size());
+  const int threads = count >= 256 ? detail::maxThreads() : 1;
+  std::vector<std::vector<int>> stamps(threads);
+  std::vector<std::vector<std::uint32_t>> turnedBy(threads);
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = detail::threadNumber();
+    std::vector<int> &stamp = stamps[t];
+    int stampValue = 0;  // one per fit of this thread
+    std::vector<int> regionsAtVertex;
+#pragma omp for schedule(dynamic, 64)
+    for (std::int64_t k = 0; k < count; ++k) {
+      if (stamp.empty()) stamp.assign(m.face.size(), -1);
+      const std::size_t v = border[k];
+      regionsAtVertex.clear();
+      for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
+        const int r = zones.faceRegion[*fi];
+        if (r != kZone &&
+            std::find(regionsAtVertex.begin(), regionsAtVertex.end(), r) == regionsAtVertex.end())
+          regionsAtVertex.push_back(r);
+      }
+      for (std::size_t i = 0; i < regionsAtVertex.size(); ++i) {
+        const int r = regionsAtVertex[i];
+        const RegionPlaneFit fit =
+            fitRegionPlane(m, vf, zones, v, r, fitSettings, stamp, stampValue++);
+        if (fit.plane.normal.SquaredNorm() == 0) continue;
+        for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
+          if (zones.faceRegion[*fi] == r &&
+              angleBetween(labels.normal[&m.face[*fi]], fit.plane.normal) > maxTurnRad)
+            turnedBy[t].push_back(*fi);
+      }
     }
   }
+  std::vector<char> turned(m.face.size(), 0);
+  for (const auto &list : turnedBy)
+    for (const std::uint32_t f : list) turned[f] = 1;
   std::size_t returned = 0;
   for (std::size_t f = 0; f < turned.size(); ++f)
     if (turned[f]) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fast_topology.h"
+#include "parallel.h"
 
 namespace edge_sharpener {
 
@@ -29,21 +30,36 @@ std::size_t countNonManifoldVertices(MeshType &m) {
   const std::size_t nv = m.vert.size();
   if (nv == 0 || m.face.empty()) return 0;
   const auto *v0 = &m.vert[0];
-  std::vector<std::uint32_t> incident(nv, 0), firstCorner(nv, kNone);
-  for (std::size_t f = 0; f < m.face.size(); ++f) {
-    if (m.face[f].IsD()) continue;
-    for (int i = 0; i < 3; ++i) {
-      const std::size_t v = std::size_t(m.face[f].cV(i) - v0);
-      if (incident[v]++ == 0) firstCorner[v] = std::uint32_t(3 * f + i);
+  // Corners counted per contiguous range of faces (one per thread), with
+  // the first corner of each vertex in each range; the lowest range that
+  // has a vertex's corners holds its first corner.
+  const std::int64_t nf = std::int64_t(m.face.size());
+  const int ranges = nf > kParallelMin ? detail::maxThreads() : 1;
+  std::vector<std::vector<std::uint32_t>> incident(ranges), firstCorner(ranges);
+#pragma omp parallel for schedule(static, 1) num_threads(ranges)
+  for (int t = 0; t < ranges; ++t) {
+    incident[t].assign(nv, 0);
+    firstCorner[t].assign(nv, kNone);
+    for (std::int64_t f = nf * t / ranges; f < nf * (t + 1) / ranges; ++f) {
+      if (m.face[f].IsD()) continue;
+      for (int i = 0; i < 3; ++i) {
+        const std::size_t v = std::size_t(m.face[f].cV(i) - v0);
+        if (incident[t][v]++ == 0) firstCorner[t][v] = std::uint32_t(3 * f + i);
+      }
     }
   }
   std::int64_t count = 0;
   const std::int64_t n = std::int64_t(nv);
 #pragma omp parallel for schedule(static, 8192) reduction(+ : count) if (n > kParallelMin)
   for (std::int64_t v = 0; v < n; ++v) {
-    if (firstCorner[v] == kNone) continue;
-    vcg::face::Pos<FaceType> pos(&m.face[firstCorner[v] / 3], int(firstCorner[v] % 3));
-    if (std::uint32_t(pos.NumberOfIncidentFaces()) != incident[v]) ++count;
+    std::uint32_t corner = kNone, faces = 0;
+    for (int t = 0; t < ranges; ++t) {
+      if (corner == kNone) corner = firstCorner[t][v];
+      faces += incident[t][v];
+    }
+    if (corner == kNone) continue;
+    vcg::face::Pos<FaceType> pos(&m.face[corner / 3], int(corner % 3));
+    if (std::uint32_t(pos.NumberOfIncidentFaces()) != faces) ++count;
   }
   return std::size_t(count);
 }

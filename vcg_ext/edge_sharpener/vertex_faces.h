@@ -6,6 +6,7 @@
 #include <vcg/complex/complex.h>
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "fast_topology.h"
@@ -15,32 +16,56 @@ namespace edge_sharpener {
 
 class VertexFaceTable {
  public:
-  /// Built on every core where that pays: the faces are cut into one
-  /// contiguous range per thread; each range's corners are counted, then
-  /// filled in after those of the ranges before it, so every row is still
-  /// in increasing face order.
+  /// Every vertex's faces.
   template <class MeshType>
-  explicit VertexFaceTable(const MeshType &m) : offset_(m.vert.size() + 1, 0) {
+  explicit VertexFaceTable(const MeshType &m) {
+    build(m, [](std::size_t) { return true; });
+  }
+
+  /// Only the vertices v with wanted[v] != 0 get their faces (the others
+  /// none): little is written when few are wanted.
+  /// \pre wanted.size() == m.vert.size().
+  template <class MeshType>
+  VertexFaceTable(const MeshType &m, const std::vector<char> &wanted) {
+    build(m, [&](std::size_t v) { return wanted[v] != 0; });
+  }
+
+  /// Indices of the faces incident to vertex v, in increasing order.
+  const std::uint32_t *begin(std::size_t v) const { return face_.data() + offset_[v]; }
+  const std::uint32_t *end(std::size_t v) const { return face_.data() + offset_[v + 1]; }
+  std::size_t degree(std::size_t v) const { return offset_[v + 1] - offset_[v]; }
+
+ private:
+  /// On every core where that pays: the faces are cut into one contiguous
+  /// range per thread; each range's corners are counted, then filled in
+  /// after those of the ranges before it, so every row is still in
+  /// increasing face order.
+  template <class MeshType, class Wanted>
+  void build(const MeshType &m, Wanted &&wanted) {
     const std::size_t nv = m.vert.size();
+    offset_.assign(nv + 1, 0);
     const std::int64_t nf = std::int64_t(m.face.size());
-    const int threads = nf > kParallelMin ? detail::maxThreads() : 1;
+    const int ranges = nf > kParallelMin ? detail::maxThreads() : 1;
     // Per range of faces and vertex: corners counted, then the next slot to fill.
-    std::vector<std::vector<std::uint32_t>> slot(threads);
-    const auto range = [&](int t) {
-      return std::pair<std::int64_t, std::int64_t>{nf * t / threads, nf * (t + 1) / threads};
+    std::vector<std::vector<std::uint32_t>> slot(ranges);
+    const auto bounds = [&](int t) {
+      return std::pair<std::int64_t, std::int64_t>{nf * t / ranges, nf * (t + 1) / ranges};
     };
-#pragma omp parallel for schedule(static, 1) num_threads(threads)
-    for (int t = 0; t < threads; ++t) {
+#pragma omp parallel for schedule(static, 1) num_threads(ranges)
+    for (int t = 0; t < ranges; ++t) {
       slot[t].assign(nv, 0);
-      const auto [begin, end] = range(t);
-      for (std::int64_t fi = begin; fi < end; ++fi)
+      const auto [first, last] = bounds(t);
+      for (std::int64_t fi = first; fi < last; ++fi)
         if (!m.face[fi].IsD())
-          for (int k = 0; k < 3; ++k) ++slot[t][vcg::tri::Index(m, m.face[fi].cV(k))];
+          for (int k = 0; k < 3; ++k) {
+            const std::size_t v = vcg::tri::Index(m, m.face[fi].cV(k));
+            if (wanted(v)) ++slot[t][v];
+          }
     }
     std::uint32_t next = 0;
     for (std::size_t v = 0; v < nv; ++v) {
       offset_[v] = next;
-      for (int t = 0; t < threads; ++t) {
+      for (int t = 0; t < ranges; ++t) {
         const std::uint32_t count = slot[t][v];
         slot[t][v] = next;
         next += count;
@@ -48,53 +73,18 @@ class VertexFaceTable {
     }
     offset_[nv] = next;
     face_.resize(next);
-#pragma omp parallel for schedule(static, 1) num_threads(threads)
-    for (int t = 0; t < threads; ++t) {
-      const auto [begin, end] = range(t);
-      for (std::int64_t fi = begin; fi < end; ++fi)
+#pragma omp parallel for schedule(static, 1) num_threads(ranges)
+    for (int t = 0; t < ranges; ++t) {
+      const auto [first, last] = bounds(t);
+      for (std::int64_t fi = first; fi < last; ++fi)
         if (!m.face[fi].IsD())
-          for (int k = 0; k < 3; ++k)
-            face_[slot[t][vcg::tri::Index(m, m.face[fi].cV(k))]++] = std::uint32_t(fi);
+          for (int k = 0; k < 3; ++k) {
+            const std::size_t v = vcg::tri::Index(m, m.face[fi].cV(k));
+            if (wanted(v)) face_[slot[t][v]++] = std::uint32_t(fi);
+          }
     }
   }
 
-  /// Only the vertices v with wanted[v] != 0 get their faces (the others
-  /// none): a pass over the faces that writes little when few are wanted.
-  /// \pre wanted.size() == m.vert.size().
-  template <class MeshType>
-  VertexFaceTable(const MeshType &m, const std::vector<char> &wanted)
-      : offset_(m.vert.size() + 1, 0) {
-    for (const auto &f : m.face)
-      if (!f.IsD())
-        for (int k = 0; k < 3; ++k) {
-          const std::size_t v = vcg::tri::Index(m, f.cV(k));
-          if (wanted[v]) ++offset_[v + 1];
-        }
-    for (std::size_t v = 0; v + 1 < offset_.size(); ++v) offset_[v + 1] += offset_[v];
-    face_.resize(offset_.back());
-    std::vector<std::uint32_t> fill(offset_.begin(), offset_.end() - 1);
-    for (std::size_t fi = 0; fi < m.face.size(); ++fi) {
-      const auto &f = m.face[fi];
-      if (f.IsD()) continue;
-      for (int k = 0; k < 3; ++k) {
-        const std::size_t v = vcg::tri::Index(m, f.cV(k));
-        if (wanted[v]) face_[fill[v]++] = std::uint32_t(fi);
-      }
-    }
-  }
-
-  /// Indices of the faces incident to vertex v, in increasing order.
-  const std::uint32_t *begin(std::size_t v) const {
-    return face_.data() + offset_[v];
-  }
-  const std::uint32_t *end(std::size_t v) const {
-    return face_.data() + offset_[v + 1];
-  }
-  std::size_t degree(std::size_t v) const {
-    return offset_[v + 1] - offset_[v];
-  }
-
- private:
   std::vector<std::uint32_t> offset_;
   std::vector<std::uint32_t> face_;
 };
