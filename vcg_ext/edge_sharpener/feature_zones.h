@@ -72,7 +72,10 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
   // Components of faces joined by smooth edges (union-find in face order:
   // sequential, where a flood fill walks the faces at random);
   // the components holding a core red face are the regions, numbered in the
-  // order of their first red face.
+  // order of their first red face. A union links the larger root under the
+  // smaller, so every root is the smallest face of its component whatever
+  // the order of the unions: each thread joins the edges inside its own
+  // range of faces, then the edges between ranges are joined serially.
   const std::size_t nf = m.face.size();
   std::vector<std::uint32_t> parent(nf);
   for (std::size_t f = 0; f < nf; ++f) parent[f] = std::uint32_t(f);
@@ -80,17 +83,32 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
     while (parent[f] != f) f = parent[f] = parent[parent[f]];  // path halving
     return f;
   };
-  for (std::size_t fi = 0; fi < nf; ++fi) {
-    auto &f = m.face[fi];
-    if (f.IsD()) continue;
-    for (int i = 0; i < 3; ++i) {
-      const auto *g = f.cFFp(i);
-      if (g == &f || labels.edge[&f][i] != EdgeLabel::Smooth) continue;
-      const std::uint32_t a = find(std::uint32_t(fi));
-      const std::uint32_t b = find(std::uint32_t(vcg::tri::Index(m, g)));
-      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  const auto unite = [&](std::uint32_t a, std::uint32_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  };
+  const std::int64_t faceCount = std::int64_t(nf);
+  const int ranges = faceCount > kParallelMin ? detail::maxThreads() : 1;
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> between(ranges);
+#pragma omp parallel for schedule(static, 1) num_threads(ranges)
+  for (int t = 0; t < ranges; ++t) {
+    const std::int64_t first = faceCount * t / ranges, last = faceCount * (t + 1) / ranges;
+    for (std::int64_t fi = first; fi < last; ++fi) {
+      auto &f = m.face[fi];
+      if (f.IsD()) continue;
+      for (int i = 0; i < 3; ++i) {
+        const auto *g = f.cFFp(i);
+        if (g == &f || labels.edge[&f][i] != EdgeLabel::Smooth) continue;
+        const std::int64_t gi = std::int64_t(vcg::tri::Index(m, g));
+        if (gi < first || gi >= last)
+          between[t].emplace_back(std::uint32_t(fi), std::uint32_t(gi));
+        else
+          unite(std::uint32_t(fi), std::uint32_t(gi));  // touches this range only
+      }
     }
   }
+  for (const auto &edges : between)
+    for (const auto &[a, b] : edges) unite(a, b);
   // Every root is the smallest face of its component (a union keeps the
   // smaller root, halving points to smaller faces), so one pass in face order
   // points every face at its root; the root's entry of faceRegion holds the
@@ -106,7 +124,6 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
       if (id == kZone) id = regions++;
     }
   }
-  const std::int64_t faceCount = std::int64_t(nf);
 #pragma omp parallel for schedule(static, 8192) if (faceCount > kParallelMin)
   for (std::int64_t fi = 0; fi < faceCount; ++fi)
     if (parent[fi] != fi) zones.faceRegion[fi] = zones.faceRegion[parent[fi]];
