@@ -235,10 +235,10 @@ std::size_t openInternalCreases(const MeshType &m, const MeshLabels<MeshType> &l
   // On every core; each thread lists the crease edges it finds.
   const std::int64_t nf = std::int64_t(m.face.size());
   const int threads = nf > kParallelMin ? detail::maxThreads() : 1;
-  std::vector<std::vector<std::uint32_t>> found(threads);
+  std::vector<detail::PerThread<std::vector<std::uint32_t>>> found(threads);
 #pragma omp parallel num_threads(threads)
   {
-    std::vector<std::uint32_t> &ends = found[detail::threadNumber()];
+    std::vector<std::uint32_t> &ends = found[detail::threadNumber()].value;
 #pragma omp for schedule(static, 8192)
     for (std::int64_t fi = 0; fi < nf; ++fi) {
       const auto &f = m.face[fi];
@@ -257,7 +257,7 @@ std::size_t openInternalCreases(const MeshType &m, const MeshLabels<MeshType> &l
   }
   std::vector<char> crease(m.vert.size(), 0);
   for (const auto &ends : found)
-    for (const std::uint32_t v : ends) crease[v] = 1;
+    for (const std::uint32_t v : ends.value) crease[v] = 1;
   return openFacesAround(vf, crease, zones);
 }
 
@@ -427,7 +427,7 @@ std::size_t returnTurnedBorderFaces(const MeshType &m, const MeshLabels<MeshType
   const std::int64_t count = std::int64_t(border.size());
   const int threads = count >= 256 ? detail::maxThreads() : 1;
   std::vector<std::vector<int>> stamps(threads);
-  std::vector<std::vector<std::uint32_t>> turnedBy(threads);
+  std::vector<detail::PerThread<std::vector<std::uint32_t>>> turnedBy(threads);
 #pragma omp parallel num_threads(threads)
   {
     const int t = detail::threadNumber();
@@ -453,13 +453,13 @@ std::size_t returnTurnedBorderFaces(const MeshType &m, const MeshLabels<MeshType
         for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
           if (zones.faceRegion[*fi] == r &&
               angleBetween(labels.normal[&m.face[*fi]], fit.plane.normal) > maxTurnRad)
-            turnedBy[t].push_back(*fi);
+            turnedBy[t].value.push_back(*fi);
       }
     }
   }
   std::vector<char> turned(m.face.size(), 0);
   for (const auto &list : turnedBy)
-    for (const std::uint32_t f : list) turned[f] = 1;
+    for (const std::uint32_t f : list.value) turned[f] = 1;
   std::size_t returned = 0;
   for (std::size_t f = 0; f < turned.size(); ++f)
     if (turned[f]) {
@@ -478,10 +478,10 @@ double medianEdgeLength(const MeshType &m) {
   // the order of the list).
   const std::int64_t nf = std::int64_t(m.face.size());
   const int threads = nf > kParallelMin ? detail::maxThreads() : 1;
-  std::vector<std::vector<float>> parts(threads);
+  std::vector<detail::PerThread<std::vector<float>>> parts(threads);
 #pragma omp parallel num_threads(threads)
   {
-    std::vector<float> &lengths = parts[detail::threadNumber()];
+    std::vector<float> &lengths = parts[detail::threadNumber()].value;
     lengths.reserve(3 * nf / (2 * threads) + 16);
 #pragma omp for schedule(static, 8192)
     for (std::int64_t fi = 0; fi < nf; ++fi) {
@@ -493,7 +493,7 @@ double medianEdgeLength(const MeshType &m) {
     }
   }
   std::size_t total = 0;
-  for (const auto &part : parts) total += part.size();
+  for (const auto &part : parts) total += part.value.size();
   if (total == 0) return 0.0;
   // Radix select: non-negative floats order as their bit patterns do, so a
   // histogram of the upper 16 bits finds the bucket of the middle element,
@@ -505,13 +505,13 @@ double medianEdgeLength(const MeshType &m) {
   };
   std::vector<std::size_t> count(std::size_t(1) << 16, 0);
   for (const auto &part : parts)
-    for (const float x : part) ++count[bitsOf(x) >> 16];
+    for (const float x : part.value) ++count[bitsOf(x) >> 16];
   std::size_t rank = total / 2, bucket = 0;
   while (rank >= count[bucket]) rank -= count[bucket++];
   std::vector<float> inBucket;
   inBucket.reserve(count[bucket]);
   for (const auto &part : parts)
-    for (const float x : part)
+    for (const float x : part.value)
       if ((bitsOf(x) >> 16) == bucket) inBucket.push_back(x);
   std::nth_element(inBucket.begin(), inBucket.begin() + rank, inBucket.end());
   return inBucket[rank];

@@ -334,16 +334,16 @@ struct NearLists {
   /// depend on how the pairs were split among threads.
   static NearLists fromPairs(
       std::size_t n,
-      const std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> &pairs) {
+      const std::vector<PerThread<std::vector<std::pair<std::uint32_t, std::uint32_t>>>> &pairs) {
     NearLists near;
     near.offset.assign(n + 1, 0);
     for (const auto &list : pairs)
-      for (const auto &[q, gi] : list) ++near.offset[q + 1];
+      for (const auto &[q, gi] : list.value) ++near.offset[q + 1];
     for (std::size_t q = 0; q < n; ++q) near.offset[q + 1] += near.offset[q];
     near.face.resize(near.offset[n]);
     std::vector<std::uint32_t> fill(near.offset.begin(), near.offset.end() - 1);
     for (const auto &list : pairs)
-      for (const auto &[q, gi] : list) near.face[fill[q]++] = gi;
+      for (const auto &[q, gi] : list.value) near.face[fill[q]++] = gi;
     for (std::size_t q = 0; q < n; ++q)
       std::sort(near.face.begin() + near.offset[q], near.face.begin() + near.offset[q + 1]);
     return near;
@@ -415,10 +415,10 @@ IntersectionStats revertSelfIntersections(
   {
     const std::int64_t nf = std::int64_t(m.face.size());
     const int threads = nf >= kParallelMin ? detail::maxThreads() : 1;
-    std::vector<std::vector<std::uint32_t>> parts(threads);
+    std::vector<detail::PerThread<std::vector<std::uint32_t>>> parts(threads);
 #pragma omp parallel num_threads(threads) reduction(max : stillExtent)
     {
-      std::vector<std::uint32_t> &part = parts[detail::threadNumber()];
+      std::vector<std::uint32_t> &part = parts[detail::threadNumber()].value;
 #pragma omp for schedule(static, 8192)
       for (std::int64_t fi = 0; fi < nf; ++fi) {
         const auto &f = m.face[fi];
@@ -435,7 +435,7 @@ IntersectionStats revertSelfIntersections(
                                  std::max({p0[c], p1[c], p2[c]}) - std::min({p0[c], p1[c], p2[c]}));
       }
     }
-    for (const auto &part : parts) query.insert(query.end(), part.begin(), part.end());
+    for (const auto &part : parts) query.insert(query.end(), part.value.begin(), part.value.end());
     std::sort(query.begin(), query.end());
   }
   for (const std::uint32_t fi : query)
@@ -493,10 +493,11 @@ IntersectionStats revertSelfIntersections(
       for (int k = 1; k < 3; ++k) b.unite(sweptBox(vcg::tri::Index(m, m.face[fi].cV(k))));
       boxes.push_back(b);
     }
-    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> hits(detail::maxThreads());
+    std::vector<detail::PerThread<std::vector<std::pair<std::uint32_t, std::uint32_t>>>> hits(
+        detail::maxThreads());
     detail::forEachBoxOverlap(m, boxes, sweptBox, moved, stillExtent,
                               [&](int thread, std::uint32_t q, std::uint32_t gi) {
-                                if (gi != query[q]) hits[thread].emplace_back(q, gi);
+                                if (gi != query[q]) hits[thread].value.emplace_back(q, gi);
                               });
     return detail::NearLists::fromPairs(query.size(), hits);
   }();
@@ -510,7 +511,8 @@ IntersectionStats revertSelfIntersections(
   std::vector<std::pair<std::uint32_t, std::uint32_t>> atRest;
   const auto intersectingPairs = [&](const std::vector<std::uint32_t> &faces) {
     for (const std::uint32_t fi : faces) inRound[fi] = 1;
-    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(detail::maxThreads()),
+    std::vector<detail::PerThread<std::vector<std::pair<std::uint32_t, std::uint32_t>>>> found(
+        detail::maxThreads()),
         foundAtRest(detail::maxThreads());
     const std::int64_t count = std::int64_t(faces.size());
 #pragma omp parallel for schedule(dynamic, 64) if (count >= 4096)
@@ -522,14 +524,15 @@ IntersectionStats revertSelfIntersections(
         if (inRound[gi] && gi < fi) continue;  // a pair of this round's faces: tested once
         const Contact contact = contactOf(fi, gi);
         if (contact == Contact::None) continue;
-        (contact == Contact::AtRest ? foundAtRest : found)[detail::threadNumber()].emplace_back(
-            std::min(fi, gi), std::max(fi, gi));
+        (contact == Contact::AtRest ? foundAtRest : found)[detail::threadNumber()]
+            .value.emplace_back(std::min(fi, gi), std::max(fi, gi));
       }
     }
     for (const std::uint32_t fi : faces) inRound[fi] = 0;
-    for (const auto &list : foundAtRest) atRest.insert(atRest.end(), list.begin(), list.end());
+    for (const auto &list : foundAtRest)
+      atRest.insert(atRest.end(), list.value.begin(), list.value.end());
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-    for (const auto &list : found) pairs.insert(pairs.end(), list.begin(), list.end());
+    for (const auto &list : found) pairs.insert(pairs.end(), list.value.begin(), list.value.end());
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     return pairs;

@@ -27,4 +27,12 @@ inline int threadNumber() {
 #endif
 }
 
+/// A value per thread on cache lines of its own: threads appending to
+/// neighbouring vectors would otherwise keep taking the line that holds both
+/// vectors' ends from each other (false sharing).
+template <class T>
+struct alignas(64) PerThread {
+  T value;
+};
+
 }  // namespace edge_sharpener::detail
