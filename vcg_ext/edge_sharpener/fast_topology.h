@@ -85,17 +85,36 @@ EdgeBuckets bucketFaceEdges(MeshType &m) {
 
 }  // namespace detail
 
+/// What buildFaceFace() saw of the edges while matching them.
+struct FaceFaceDiagnostics {
+  /// Lowest index of a face with an edge shared by three or more faces
+  /// (the face count when there is none).
+  std::size_t firstNonManifoldFace = 0;
+  /// Whether two faces share a two-face edge in the same direction
+  /// (vcg::face::CheckOrientation fails there).
+  bool misoriented = false;
+};
+
 /// Rebuilds the face-face adjacency of `m`, like
 /// vcg::tri::UpdateTopology<MeshType>::FaceFace (see the top of this file).
 /// Deleted faces are skipped and keep their old adjacency.
+/// \return the non-manifold edges and orientation it found on the way.
 template <class MeshType>
-void buildFaceFace(MeshType &m) {
+FaceFaceDiagnostics buildFaceFace(MeshType &m) {
   vcg::tri::RequireFFAdjacency(m);
+  FaceFaceDiagnostics diag;
+  diag.firstNonManifoldFace = m.face.size();
   const detail::EdgeBuckets b = detail::bucketFaceEdges(m);
-  if (b.edges.empty()) return;
+  if (b.edges.empty()) return diag;
   auto *f0 = &m.face[0];
+  const auto *v0 = &m.vert[0];
   const std::int64_t buckets = std::int64_t(b.start.size()) - 1;
-#pragma omp parallel for schedule(static, 8192) if (buckets > kParallelMin)
+  std::int64_t firstNonManifold = std::int64_t(m.face.size());
+  int misoriented = 0;
+#pragma omp parallel for schedule(static, 8192) reduction(min                 \
+                                                          : firstNonManifold) \
+    reduction(max                                                             \
+              : misoriented) if (buckets > kParallelMin)
   for (std::int64_t v = 0; v < buckets; ++v) {
     const detail::BucketedEdge *e = b.edges.data() + b.start[v];
     const detail::BucketedEdge *end = b.edges.data() + b.start[v + 1];
@@ -109,9 +128,22 @@ void buildFaceFace(MeshType &m) {
         f.FFp(p->id % 3) = f0 + q->id / 3;
         f.FFi(p->id % 3) = char(q->id % 3);
       }
+      if (run - e > 2) {
+        for (const detail::BucketedEdge *p = e; p < run; ++p)
+          firstNonManifold = std::min(firstNonManifold, std::int64_t(p->id / 3));
+      } else if (run - e == 2) {
+        // Consistent faces walk their shared edge in opposite directions.
+        const auto startsAtLow = [&](const detail::BucketedEdge *p) {
+          return std::int64_t(f0[p->id / 3].cV(p->id % 3) - v0) == v;
+        };
+        if (startsAtLow(e) == startsAtLow(e + 1)) misoriented = 1;
+      }
       e = run;
     }
   }
+  diag.firstNonManifoldFace = std::size_t(firstNonManifold);
+  diag.misoriented = misoriented != 0;
+  return diag;
 }
 
 }  // namespace edge_sharpener

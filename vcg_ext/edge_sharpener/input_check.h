@@ -105,33 +105,19 @@ std::string findInputProblem(MeshType &m) {
   if (firstRepeat < faceCount)
     return "face " + std::to_string(firstRepeat) +
            " repeats a vertex (remove duplicated vertices/faces first)";
-  buildFaceFace(m);
   // An edge is manifold when its FF ring has at most two faces; the first
-  // face (lowest index) with a non-manifold edge is named. (Not
+  // face (lowest index) with a non-manifold edge is named. The FF build
+  // finds both that and the orientation while it matches the edges. (Not
   // Clean::CountNonManifoldEdgeFF: it takes face bit flags it never returns,
   // which inside MeshLab are shared with every other filter.)
-  const std::int64_t nf = std::int64_t(m.face.size());
-  std::int64_t firstNonManifold = nf;
-  int misoriented = 0;
-#pragma omp parallel for schedule(static, 8192) reduction(min                 \
-                                                          : firstNonManifold) \
-    reduction(max                                                             \
-              : misoriented) if (nf > kParallelMin)
-  for (std::int64_t i = 0; i < nf; ++i) {
-    auto &f = m.face[i];
-    for (int j = 0; j < 3; ++j) {
-      if (!vcg::face::IsManifold(f, j))
-        firstNonManifold = std::min(firstNonManifold, i);
-      else if (!vcg::face::CheckOrientation(f, j))
-        misoriented = 1;
-    }
-  }
+  const FaceFaceDiagnostics edges = buildFaceFace(m);
+  const std::size_t nf = m.face.size(), firstNonManifold = edges.firstNonManifoldFace;
   if (firstNonManifold < nf)
     return "mesh has non-manifold edges (three or more faces on an edge, e.g. at face " +
            std::to_string(firstNonManifold) + ")";
   if (std::size_t n = detail::countNonManifoldVertices(m))
     return "mesh has " + std::to_string(n) + " non-manifold vertices";
-  if (misoriented) return "faces are not consistently oriented (re-orient the mesh first)";
+  if (edges.misoriented) return "faces are not consistently oriented (re-orient the mesh first)";
   return "";
 }
 

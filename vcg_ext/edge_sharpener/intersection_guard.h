@@ -389,11 +389,14 @@ std::vector<typename MeshType::CoordType> positionsBeforeProjection(const MeshTy
 /// vertices to rest too, so cleanup's guarantee (no such face holds a moved
 /// vertex) is kept. Inserted vertices that retreat are labelled
 /// Placement::IntersectionRevert. Deterministic (serial, index order).
+/// `longestInputEdge`: the input's longest edge (SharpenReport), which bounds
+/// the faces the split did not make.
 /// \pre removeDegenerateTriangles() ran (deleted elements not yet compacted).
 template <class MeshType>
 IntersectionStats revertSelfIntersections(
     MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels,
-    const std::vector<typename MeshType::CoordType> &originalRest, double degenerateAngleRad) {
+    const std::vector<typename MeshType::CoordType> &originalRest, double degenerateAngleRad,
+    double longestInputEdge) {
   using Coord = typename MeshType::CoordType;
   IntersectionStats s;
   const std::size_t n0 = plan.originalVertexCount;
@@ -408,10 +411,12 @@ IntersectionStats revertSelfIntersections(
   if (movedCount == 0) return s;
 
   // Faces of the moved vertices (in face order), and for each moved vertex
-  // its faces (CSR); and the largest extent of the other faces along an
-  // axis (for forEachBoxOverlap()).
+  // its faces (CSR); and a bound on the extent along an axis of the other
+  // faces (for forEachBoxOverlap()): the input's faces are no wider than its
+  // longest edge, and only the faces the split made (whose vertices cleanup
+  // may have merged across two input faces) are measured.
   std::vector<std::uint32_t> query, offset(m.vert.size() + 1, 0), incident;
-  double stillExtent = 0;
+  double stillExtent = longestInputEdge;
   {
     const std::int64_t nf = std::int64_t(m.face.size());
     const int threads = nf >= kParallelMin ? detail::maxThreads() : 1;
@@ -429,6 +434,8 @@ IntersectionStats revertSelfIntersections(
           part.push_back(std::uint32_t(fi));
           continue;
         }
+        const FaceLabel label = labels.face[fi];
+        if (label != FaceLabel::Chamfer && label != FaceLabel::Corner) continue;  // an input face
         const Vec3 p0 = positionOf(f.cV(0)), p1 = positionOf(f.cV(1)), p2 = positionOf(f.cV(2));
         for (int c = 0; c < 3; ++c)
           stillExtent = std::max(stillExtent,
