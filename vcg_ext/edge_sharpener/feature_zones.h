@@ -42,6 +42,7 @@ struct FeatureZones {
   std::vector<int> vertexLabel;  ///< region id, kZone (unlabelled) or kCrease
   std::vector<char> inRegion;    ///< 1: a vertex of some region's face (never moves)
   SupportPlanes support;         ///< plane of the label's region near the vertex
+  VertexFaceTable inputFaces;    ///< faces of each vertex, as detection saw them
 };
 
 namespace detail {
@@ -62,11 +63,14 @@ void forEachNeighbour(const MeshType &m, const VertexFaceTable &vf, std::size_t 
 /// smooth edges that hold one of the paper's core faces (filters 1-2), one id
 /// per component, then returns to the zone every region thinner than `minDepth` hops
 /// (a corridor of smooth triangles, e.g. a wide but regular chamfer band).
+/// `meshHasBorder` false (no edge with one face: SmoothEdgeStats::boundaryEdges
+/// is 0) skips looking for border edges.
 /// \pre labelSmoothEdges() ran; m is compact (no deleted faces).
 /// Writes labels.vertex/face like filters 1-2.
 template <class MeshType>
 void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceTable &vf,
-                    int minDepth, FeatureZones &zones, ExtendedStats &stats) {
+                    int minDepth, FeatureZones &zones, ExtendedStats &stats,
+                    bool meshHasBorder = true) {
   paintInteriorRedVertices(m, labels);
   paintCoreRedFaces(m, labels);
   // Components of faces joined by smooth edges (union-find in face order:
@@ -138,10 +142,14 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
     if (vf.degree(v) == 0) continue;
     int r = zones.faceRegion[*vf.begin(v)];
     bool interior = r != kZone;
-    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v) && interior; ++fi) {
+    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v) && interior; ++fi)
+      interior = zones.faceRegion[*fi] == r;
+    // A border edge at v (only looked for where the mesh has one: it reads
+    // the faces themselves).
+    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v) && interior && meshHasBorder;
+         ++fi) {
       const auto &f = m.face[*fi];
-      if (zones.faceRegion[*fi] != r) interior = false;
-      for (int k = 0; k < 3 && interior; ++k)  // a border edge at v
+      for (int k = 0; k < 3 && interior; ++k)
         if (f.cFFp(k) == &f && (vcg::tri::Index(m, f.cV(k)) == std::size_t(v) ||
                                 vcg::tri::Index(m, f.cV((k + 1) % 3)) == std::size_t(v)))
           interior = false;
@@ -769,6 +777,8 @@ FilterStats markZoneChamfers(MeshType &m, MeshLabels<MeshType> &labels, const Fe
 /// than `opt.maxProjectionFactor` x the vertex's mean edge length, or one
 /// that would flip an incident face or create an angle below the
 /// degenerate threshold, is not made. Region vertices never move.
+/// \pre the mesh is the one detection labelled (zones.inputFaces), split by
+/// subdivide() and changed by nothing else since.
 /// \return the number of vertices moved.
 template <class MeshType>
 std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::size_t originalCount,
@@ -778,12 +788,31 @@ std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::siz
   const auto candidate = [&](std::size_t v) {
     return !zones.inRegion[v] && zones.vertexLabel[v] >= 0 && nearSharpEdge[v];
   };
-  std::vector<char> wanted(m.vert.size(), 0);
-  for (std::size_t v = 0; v < originalCount; ++v) wanted[v] = candidate(v);
-  const VertexFaceTable vf(m, wanted);  // after subdivision, of the candidates only
+  // The candidates' faces after the split, in increasing order. A face that
+  // kept its index holds only vertices of the input face it was (the split
+  // puts a child in its parent's slot), so a candidate's faces are among its
+  // input faces and among the faces the split appended after them.
+  constexpr std::uint32_t kNone = ~std::uint32_t(0);
+  const std::size_t firstNew = zones.faceRegion.size();
+  std::vector<std::uint32_t> slot(originalCount, kNone);
+  std::vector<std::vector<std::uint32_t>> facesOf;
+  for (std::size_t v = 0; v < originalCount; ++v) {
+    if (!candidate(v)) continue;
+    slot[v] = std::uint32_t(facesOf.size());
+    auto &list = facesOf.emplace_back();
+    for (const std::uint32_t *fi = zones.inputFaces.begin(v); fi != zones.inputFaces.end(v); ++fi)
+      for (int k = 0; k < 3; ++k)
+        if (vcg::tri::Index(m, m.face[*fi].cV(k)) == v) list.push_back(*fi);
+  }
+  for (std::size_t fi = firstNew; fi < m.face.size(); ++fi)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t u = vcg::tri::Index(m, m.face[fi].cV(k));
+      if (u < originalCount && slot[u] != kNone) facesOf[slot[u]].push_back(std::uint32_t(fi));
+    }
   std::size_t moved = 0;
   for (std::size_t v = 0; v < originalCount; ++v) {
-    if (!wanted[v] || vf.degree(v) == 0) continue;
+    if (slot[v] == kNone || facesOf[slot[v]].empty()) continue;
+    const std::vector<std::uint32_t> &faces = facesOf[slot[v]];
     const Plane &pl = zones.support.plane(v);
     const Vec3 p = positionOf(&m.vert[v]);
     const Vec3 target = p - pl.normal * (pl.normal * (p - pl.point));
@@ -792,17 +821,20 @@ std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::siz
     if (vcg::Point3<Scalar>::Construct(target) == m.vert[v].cP()) continue;
     double edgeSum = 0;
     int edgeCount = 0;
-    detail::forEachNeighbour(m, vf, v, [&](std::size_t u) {
-      edgeSum += (positionOf(&m.vert[u]) - p).Norm();
-      ++edgeCount;
-    });
+    for (const std::uint32_t fi : faces)
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t u = vcg::tri::Index(m, m.face[fi].cV(k));
+        if (u == v) continue;
+        edgeSum += (positionOf(&m.vert[u]) - p).Norm();
+        ++edgeCount;
+      }
     if (step > opt.maxProjectionFactor * edgeSum / std::max(1, edgeCount)) {
       ++stats.projectionsRejected;
       continue;
     }
     bool ok = true;
-    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v) && ok; ++fi) {
-      const auto &f = m.face[*fi];
+    for (std::size_t i = 0; i < faces.size() && ok; ++i) {
+      const auto &f = m.face[faces[i]];
       Vec3 q[3], r[3];
       for (int k = 0; k < 3; ++k) {
         q[k] = positionOf(f.cV(k));

@@ -16,6 +16,9 @@ namespace edge_sharpener {
 
 class VertexFaceTable {
  public:
+  /// No rows (assign a built table before reading it).
+  VertexFaceTable() = default;
+
   /// Every vertex's faces.
   template <class MeshType>
   explicit VertexFaceTable(const MeshType &m) {

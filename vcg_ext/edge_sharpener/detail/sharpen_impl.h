@@ -57,8 +57,10 @@ void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
   }
   reportProgress(opt, 20, "Edge-Sharpener: feature zones");
   report.extendedMethod = true;
-  const VertexFaceTable vf(m);
-  segmentRegions(m, labels, vf, opt.minRegionDepth, zones, report.extended);
+  zones.inputFaces = VertexFaceTable(m);
+  const VertexFaceTable &vf = zones.inputFaces;
+  segmentRegions(m, labels, vf, opt.minRegionDepth, zones, report.extended,
+                 report.smooth.boundaryEdges > 0);
   if (opt.openRegionContacts) {
     report.extended.openedContacts = openRegionContacts(m, vf, zones);
     report.extended.zoneFaces += report.extended.openedContacts;
