@@ -28,6 +28,7 @@ struct CliOptions {
   es::SharpenOptions extended;  // tuning of the extended method
   double degenerateAngleDeg = 1.0;
   bool keepContacts = false;
+  bool noGridGuard = false;
   bool strict = false;                             // the strict plane guard's preset
   double borderTurnFactor = -1, maxOffPlane = -1;  // its settings one by one (-1: unset)
   bool noLengthCheck = false, noConvexityCheck = false;
@@ -76,6 +77,7 @@ int run(const CliOptions &cli) {
   opt.smoothMultiplier = cli.multiplier;
   opt.method = cli.method == "extended" ? es::Method::Extended : es::Method::Paper;
   opt.openRegionContacts = !cli.keepContacts;
+  opt.samplingGridGuard = !cli.noGridGuard;
   opt.setStrictPlaneGuard(cli.strict);
   if (cli.borderTurnFactor >= 0) opt.borderTurnThresholdFactor = cli.borderTurnFactor;
   if (cli.maxOffPlane >= 0) opt.maxSourceOffPlaneSpacings = cli.maxOffPlane;
@@ -184,6 +186,14 @@ int main(int argc, char **argv) {
                  "extended: keep a vertex at rest when a source vertex lies farther than this "
                  "many median edge lengths from its plane (0: off)")
       ->check(CLI::Range(0.0, 100.0));
+  app.add_flag("--no-grid-guard", cli.noGridGuard,
+               "extended: keep moves that sweep over a node of the input's marching-cubes grid "
+               "(the guard is on by default and only acts on inputs sampled on such a grid)");
+  app.add_option("--grid-tolerance", cli.extended.gridSweepToleranceCells,
+                 "extended: a node counts as swept when it lies this many cells past the moved "
+                 "face")
+      ->default_val(cli.extended.gridSweepToleranceCells)
+      ->check(CLI::Range(0.0, 10.0));
   app.add_flag("--keep-contacts", cli.keepContacts,
                "extended: leave faces where two smooth regions touch in their regions");
   app.add_flag("--no-length-check", cli.noLengthCheck,

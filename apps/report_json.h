@@ -73,6 +73,14 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"projected_vertices", r.extended.projectedVertices},
                      {"projections_rejected", r.extended.projectionsRejected},
                      {"max_projection", r.extended.maxProjection}};
+  if (r.extendedMethod && r.geometryChanged)
+    j["sampling_grid"] = {{"found", r.grid.gridFound},
+                          {"step", r.grid.step},
+                          {"nodes_tested", r.grid.nodesTested},
+                          {"sweeping_faces", r.grid.sweepingFaces},
+                          {"reverted", r.grid.reverted},
+                          {"zone_reverted", r.grid.zoneReverted},
+                          {"rounds", r.grid.rounds}};
   return j;
 }
 

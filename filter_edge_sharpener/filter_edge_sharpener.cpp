@@ -112,6 +112,20 @@ const OptionParam kStrictPlaneGuard{
       o.setStrictPlaneGuard(par.getBool("strictPlaneGuard"));
     }};
 
+const OptionParam kSamplingGridGuard{
+    [](RichParameterList &par, const es::SharpenOptions &d) {
+      par.addParam(RichBool(
+          "samplingGridGuard", d.samplingGridGuard, "Sampling-grid guard (extended)",
+          "Extended method only. When the input was made by marching cubes (its vertices lie on "
+          "the edges of an axis-aligned grid, which is detected), a new vertex goes back to "
+          "rest (fallback <i>grid_revert</i>) when sharpening would sweep the surface over a "
+          "grid node that the sampler saw on the other side: the edge is a blend or a bevel "
+          "hardly larger than a cell, not a sharp edge. Does nothing on other inputs."));
+    },
+    [](const RichParameterList &par, es::SharpenOptions &o) {
+      o.samplingGridGuard = par.getBool("samplingGridGuard");
+    }};
+
 // ---------------------------------------------------------------------------
 // Filters.
 
@@ -151,7 +165,7 @@ const std::vector<FilterSpec> &filterTable() {
        "Needs a two-manifold triangle mesh (point clouds and non-manifold meshes are "
        "refused and left untouched). The report of every stage is written to the log.",
        {&kMethod, &kSmoothMultiplier, &kEdgeLengthCheck, &kColorize, &kDegenerateAngle,
-        &kStrictPlaneGuard},
+        &kStrictPlaneGuard, &kSamplingGridGuard},
        &es::sharpen<CMeshO>,
        false,
        MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |

@@ -26,7 +26,8 @@ Float|Smooth-edge multiplier
 Bool|Edge-length check
 Bool|Colorize
 Float|Degenerate angle (deg)
-Bool|Strict plane guard (extended)"
+Bool|Strict plane guard (extended)
+Bool|Sampling-grid guard (extended)"
 check_filter "Edge-Sharpener: Detect Chamfers" "Enum|Method
 Float|Smooth-edge multiplier
 Bool|Strict plane guard (extended)"

@@ -29,6 +29,7 @@
 #include "parallel.h"
 #include "placement.h"
 #include "report.h"
+#include "sampling_grid.h"
 #include "vertex_faces.h"
 
 namespace edge_sharpener {
@@ -43,6 +44,7 @@ struct FeatureZones {
   std::vector<char> inRegion;    ///< 1: a vertex of some region's face (never moves)
   SupportPlanes support;         ///< plane of the label's region near the vertex
   VertexFaceTable inputFaces;    ///< faces of each vertex, as detection saw them
+  SamplingGrid samplingGrid;     ///< the input's marching-cubes grid, if it has one
 };
 
 namespace detail {

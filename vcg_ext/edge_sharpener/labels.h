@@ -45,8 +45,9 @@ enum class Placement : std::uint8_t {
   CurvedSupport,       ///< extended method: the regions curve like a blend, not a sharp edge
   IntersectionRevert,  ///< moved back: a face of it intersected another face
   OffPlaneSource,      ///< extended method, strict guard: a source vertex lies off its plane
+  GridRevert,  ///< extended method: moved back, it swept over a node of the input's sampling grid
 };
-constexpr int kPlacementCount = 12;
+constexpr int kPlacementCount = 13;
 
 const char *toString(Placement p);
 
@@ -64,6 +65,7 @@ inline const char *toString(Placement p) {
     case Placement::CurvedSupport: return "curved_support";
     case Placement::OffPlaneSource: return "off_plane_source";
     case Placement::IntersectionRevert: return "intersection_revert";
+    case Placement::GridRevert: return "grid_revert";
   }
   return "unknown";
 }

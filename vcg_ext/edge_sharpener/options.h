@@ -125,6 +125,16 @@ struct SharpenOptions {
   /// faces of the chamfer. 0: no refit.
   double fitTrimAngleRad = 15.0 * M_PI / 180.0;
 
+  /// Send a moved vertex back to rest when one of its faces sweeps over a
+  /// node of the input's sampling grid, when the input has one (marching
+  /// cubes: sampling_grid.h): the sampler saw that node on the other side of
+  /// the surface, so the sharp edge is not there (a blend or a bevel hardly
+  /// larger than a cell).
+  bool samplingGridGuard = true;
+  /// ...by more than this many cells past the moved face (plane fits of a
+  /// truly sharp edge graze nodes by a few thousandths of a cell).
+  double gridSweepToleranceCells = 0.03;
+
   // --- Extended method, strict plane guard (off by default; `--strict`) ---
 
   /// Before zone labelling, region faces touching the zone whose normal turns

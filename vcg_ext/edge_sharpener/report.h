@@ -77,6 +77,18 @@ struct IntersectionStats {
   std::size_t remaining = 0;          ///< intersecting pairs left alone: they intersect at rest too
 };
 
+/// Stage 5b, extended method: moved vertices sent back to rest because their
+/// faces swept over a node of the input's sampling grid (sampling_grid.h).
+struct GridGuardStats {
+  bool gridFound = false;         ///< the input lies on an axis-aligned sampling grid
+  double step = 0;                ///< its smallest cell size
+  std::size_t nodesTested = 0;    ///< sampled grid nodes in the swept volumes, first round
+  std::size_t sweepingFaces = 0;  ///< moved faces that swept over such a node, first round
+  std::size_t reverted = 0;       ///< inserted vertices sent back to rest
+  std::size_t zoneReverted = 0;   ///< projected zone vertices sent back to rest
+  std::size_t rounds = 0;         ///< rounds that found a swept node
+};
+
 /// Extended method: segmentation and zone labelling.
 struct ExtendedStats {
   std::size_t regions = 0;               ///< smooth regions kept
@@ -102,6 +114,7 @@ struct SharpenReport {
   PlacementStats placement;
   CleanupStats cleanup;
   IntersectionStats intersections;
+  GridGuardStats grid;  ///< extended method with SharpenOptions::samplingGridGuard
   bool extendedMethod = false;
   ExtendedStats extended;        ///< filled by the extended method only
   bool geometryChanged = false;  ///< false for detection-only runs
@@ -149,6 +162,15 @@ inline std::string formatReport(const SharpenReport &r) {
     s << "; " << toString(p) << " " << r.placement.byOutcome[i];
   }
   s << "\n";
+  if (r.extendedMethod) {
+    s << "sampling grid: ";
+    if (r.grid.gridFound)
+      s << "axis-aligned, cell " << r.grid.step << "; " << r.grid.sweepingFaces
+        << " moved faces swept over a sampled node, " << r.grid.reverted << " inserted and "
+        << r.grid.zoneReverted << " zone vertices sent back (" << r.grid.rounds << " rounds)\n";
+    else
+      s << "none found (guard off)\n";
+  }
   s << "cleanup: " << r.cleanup.degenerateFound << " degenerate faces found, "
     << r.cleanup.collapses << " collapses, " << r.cleanup.flips << " flips, " << r.cleanup.reverted
     << " vertices reverted, " << r.cleanup.remaining << " remaining, " << r.cleanup.inherited

@@ -13,6 +13,7 @@
 #include "../input_check.h"
 #include "../intersection_guard.h"
 #include "../placement.h"
+#include "../sampling_grid.h"
 #include "../smooth_edges.h"
 #include "../subdivision.h"
 
@@ -78,6 +79,7 @@ void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
     report.extended.zoneFaces += report.extended.returnedBorderFaces;
   }
   labelZoneVertices(m, vf, opt, zones, report.extended);
+  if (opt.samplingGridGuard) zones.samplingGrid = detectSamplingGrid(m);
   zones.support.sampleSpacing = medianEdgeLength(m);
   if (opt.maxSourceOffPlaneSpacings > 0) measureOffPlane(m, zones);
   report.filters = markZoneChamfers(m, labels, zones, opt.sameRegionFeatureAngleRad);
@@ -146,6 +148,11 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
         for (int i = 0; i < plan.inserted[k].originalCount; ++i)
           nearSharpEdge[plan.inserted[k].original[i]] = 1;
     projectZoneVertices(m, zones, plan.originalVertexCount, nearSharpEdge, opt, report.extended);
+    if (opt.samplingGridGuard) {
+      report.grid = revertGridContradictions(m, plan, labels, zones.samplingGrid,
+                                             restBeforeProjection, opt.gridSweepToleranceCells);
+      report.extended.projectedVertices -= report.grid.zoneReverted;
+    }
   }
 
   detail::reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");

@@ -1,0 +1,408 @@
+// The sampling grid of a marching-cubes mesh, and the guard that keeps a
+// sharpened surface consistent with it (extended method).
+//
+// Marching cubes puts every vertex on an edge of an axis-aligned grid, where
+// the sampled surface crosses that edge: two of its coordinates lie on grid
+// lines, and of the two grid nodes bracketing it, the one its normal points
+// to is outside the solid and the other inside. A sharpened surface that
+// sweeps over such a node contradicts the sampling: the true surface does
+// not pass there. That is what tells a blend or a designed bevel hardly
+// larger than a cell (the paper's Figure 11) from a chamfer cut by the
+// sampler: squaring off a fillet 1.7 cells in radius puts a node the sampler
+// saw outside (0.65 cells away) inside the solid; restoring a truly sharp
+// edge leaves every node where it was.
+#pragma once
+
+#include <vcg/complex/complex.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "attributes.h"
+#include "geometry.h"
+#include "mesh_labels.h"
+#include "report.h"
+#include "subdivision.h"
+
+namespace edge_sharpener {
+
+/// Grid lines along one axis: {origin + i * step}. step 0: none found.
+struct AxisLattice {
+  double origin = 0;
+  double step = 0;
+
+  bool valid() const { return step > 0; }
+  /// Lattice coordinate of x (the grid line index where it is whole).
+  double coordinate(double x) const { return (x - origin) / step; }
+  /// Whether x lies on a grid line, within `tolerance` steps.
+  bool contains(double x, double tolerance = 1e-3) const {
+    const double t = coordinate(x);
+    return valid() && std::abs(t - std::round(t)) <= tolerance;
+  }
+};
+
+/// The grid lines among sampled coordinates along one axis: values shared by
+/// several vertices, most of them a common step apart. Pure function.
+/// \param values one coordinate of many vertices (any order; copied).
+/// \return the lattice fitted (least squares) to the shared values that lie
+///   on it, or an invalid one when fewer than three lines are found.
+inline AxisLattice fitAxisLattice(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  std::vector<double> lines;  // values shared by at least two vertices
+  for (std::size_t i = 0; i < values.size();) {
+    std::size_t j = i;
+    while (j < values.size() && values[j] == values[i]) ++j;
+    if (j - i >= 2) lines.push_back(values[i]);
+    i = j;
+  }
+  AxisLattice lattice;
+  if (lines.size() < 3) return lattice;
+  // The step: the gap between consecutive lines that recurs most (within
+  // 0.1%), found by a window over the sorted gaps.
+  std::vector<double> gaps;
+  for (std::size_t i = 1; i < lines.size(); ++i) gaps.push_back(lines[i] - lines[i - 1]);
+  std::sort(gaps.begin(), gaps.end());
+  std::size_t best = 0, bestCount = 0;
+  for (std::size_t i = 0, j = 0; i < gaps.size(); ++i) {
+    j = std::max(j, i);
+    while (j + 1 < gaps.size() && gaps[j + 1] <= gaps[i] * 1.002) ++j;
+    if (j - i + 1 > bestCount) bestCount = j - i + 1, best = i;
+  }
+  if (bestCount < 2 || !(gaps[best] > 0) || !std::isfinite(gaps[best])) return lattice;
+  double step = 0;
+  for (std::size_t k = best; k < best + bestCount; ++k) step += gaps[k];
+  step /= double(bestCount);
+  // The origin: the phase most lines share (in thousandths of a step).
+  std::unordered_map<long, std::size_t> phases;
+  long bestPhase = 0;
+  std::size_t bestPhaseCount = 0;
+  for (double x : lines) {
+    double phase = std::fmod(x / step, 1.0);
+    if (!std::isfinite(phase)) continue;
+    if (phase < 0) phase += 1.0;
+    const long key = std::lround(phase * 1000.0) % 1000;
+    const std::size_t c = ++phases[key];
+    if (c > bestPhaseCount || (c == bestPhaseCount && key < bestPhase))
+      bestPhaseCount = c, bestPhase = key;
+  }
+  lattice = AxisLattice{bestPhase / 1000.0 * step, step};
+  // Least squares on the lines that lie on it: x = origin + i * step.
+  double n = 0, si = 0, sx = 0, sii = 0, six = 0;
+  for (double x : lines) {
+    if (!lattice.contains(x, 0.01)) continue;
+    const double i = std::round(lattice.coordinate(x));
+    n += 1, si += i, sx += x, sii += i * i, six += i * x;
+  }
+  const double det = n * sii - si * si;
+  if (n >= 3 && det > 0) {
+    const double fitStep = (n * six - si * sx) / det;
+    if (fitStep > 0) lattice = AxisLattice{(sx - fitStep * si) / n, fitStep};
+  }
+  return lattice;
+}
+
+/// The axis-aligned grid a marching-cubes mesh was sampled on, when it was.
+struct SamplingGrid {
+  std::array<AxisLattice, 3> axis;
+  /// Fraction of the vertices examined that lie on exactly two grid lines.
+  double onGridFraction = 0;
+  /// Whether the mesh was found to come from such a grid.
+  bool found = false;
+
+  double minStep() const { return std::min({axis[0].step, axis[1].step, axis[2].step}); }
+  /// Position of the grid node with lattice indices `ijk`.
+  Vec3 node(const std::array<long, 3> &ijk) const {
+    return Vec3(axis[0].origin + ijk[0] * axis[0].step, axis[1].origin + ijk[1] * axis[1].step,
+                axis[2].origin + ijk[2] * axis[2].step);
+  }
+  /// Grid line index at or below (`up` false) or at or above (`up` true) x
+  /// along `axis`; false when it lies beyond kMaxLineIndex lines from the
+  /// origin (no grid spans that many: such a point is far off the mesh).
+  bool lineIndex(int a, double x, bool up, long &index) const {
+    const double t = axis[a].coordinate(x);
+    const double r = up ? std::ceil(t) : std::floor(t);
+    if (!(std::abs(r) <= double(kMaxLineIndex))) return false;
+    index = long(r);
+    return true;
+  }
+  static constexpr long kMaxLineIndex = 1 << 20;
+  /// The axis along which p lies on a grid edge (the other two coordinates
+  /// on grid lines), or -1.
+  int edgeAxis(const Vec3 &p) const {
+    int free = -1, on = 0;
+    for (int a = 0; a < 3; ++a) {
+      if (axis[a].contains(p[a]))
+        ++on;
+      else
+        free = a;
+    }
+    return on == 2 ? free : -1;
+  }
+};
+
+/// Minimum fraction of vertices on grid edges for a mesh to count as
+/// sampled on a grid (marching cubes: all but the few on grid nodes).
+constexpr double kMinOnGridFraction = 0.9;
+
+/// Infers the sampling grid from at most `maxSamples` vertices (an even
+/// stride over the vertex vector, so the result is deterministic).
+/// Each axis is fitted twice: first on every coordinate, then only on the
+/// vertices that lie on a grid edge along another axis, whose coordinate
+/// along this one is a grid line (the first fit also sees the repeated
+/// coordinates of large flat faces).
+template <class MeshType>
+SamplingGrid detectSamplingGrid(const MeshType &m, std::size_t maxSamples = 100000) {
+  SamplingGrid grid;
+  std::vector<Vec3> pts;
+  const std::size_t nv = m.vert.size();
+  if (nv < 16) return grid;
+  const std::size_t stride = std::max<std::size_t>(1, nv / maxSamples);
+  for (std::size_t v = 0; v < nv; v += stride)
+    if (!m.vert[v].IsD()) pts.push_back(positionOf(&m.vert[v]));
+  std::vector<double> values;
+  for (int a = 0; a < 3; ++a) {
+    values.clear();
+    for (const Vec3 &p : pts) values.push_back(p[a]);
+    grid.axis[a] = fitAxisLattice(values);
+  }
+  for (int round = 0; round < 2; ++round)
+    for (int a = 0; a < 3; ++a) {
+      const int b = (a + 1) % 3, c = (a + 2) % 3;
+      if (!grid.axis[b].valid() || !grid.axis[c].valid()) continue;
+      values.clear();
+      for (const Vec3 &p : pts)
+        if (grid.axis[b].contains(p[b]) != grid.axis[c].contains(p[c])) values.push_back(p[a]);
+      if (values.size() >= 16) {
+        const AxisLattice refined = fitAxisLattice(values);
+        if (refined.valid()) grid.axis[a] = refined;
+      }
+    }
+  if (!grid.axis[0].valid() || !grid.axis[1].valid() || !grid.axis[2].valid()) return grid;
+  std::size_t onEdge = 0;
+  for (const Vec3 &p : pts) onEdge += grid.edgeAxis(p) >= 0;
+  grid.onGridFraction = double(onEdge) / double(pts.size());
+  grid.found = grid.onGridFraction >= kMinOnGridFraction;
+  return grid;
+}
+
+namespace detail {
+
+/// Whether q lies in the tetrahedron abcd (closed; false when it is flat).
+inline bool inTetrahedron(const Vec3 &q, const Vec3 &a, const Vec3 &b, const Vec3 &c,
+                          const Vec3 &d) {
+  const auto vol = [](const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, const Vec3 &p3) {
+    return ((p1 - p0) ^ (p2 - p0)) * (p3 - p0);
+  };
+  const double total = vol(a, b, c, d);
+  if (total == 0) return false;
+  const double s = total > 0 ? 1.0 : -1.0;
+  return s * vol(q, b, c, d) >= 0 && s * vol(a, q, c, d) >= 0 && s * vol(a, b, q, d) >= 0 &&
+         s * vol(a, b, c, q) >= 0;
+}
+
+}  // namespace detail
+
+/// Whether q lies in the volume a triangle sweeps when its corners move
+/// linearly from `before` to `after` (three tetrahedra of the prism). Pure.
+inline bool inSweptPrism(const Vec3 &q, const std::array<Vec3, 3> &before,
+                         const std::array<Vec3, 3> &after) {
+  const Vec3 &a0 = before[0], &b0 = before[1], &c0 = before[2];
+  const Vec3 &a1 = after[0], &b1 = after[1], &c1 = after[2];
+  return detail::inTetrahedron(q, a0, b0, c0, a1) || detail::inTetrahedron(q, b0, c0, a1, b1) ||
+         detail::inTetrahedron(q, c0, a1, b1, c1);
+}
+
+/// Distance from q to the triangle t (closest point, Ericson's regions). Pure.
+inline double pointTriangleDistance(const Vec3 &q, const std::array<Vec3, 3> &t) {
+  const Vec3 &a = t[0], &b = t[1], &c = t[2];
+  const Vec3 ab = b - a, ac = c - a, ap = q - a;
+  const double d1 = ab * ap, d2 = ac * ap;
+  if (d1 <= 0 && d2 <= 0) return (q - a).Norm();
+  const Vec3 bp = q - b;
+  const double d3 = ab * bp, d4 = ac * bp;
+  if (d3 >= 0 && d4 <= d3) return (q - b).Norm();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (q - (a + ab * (d1 / (d1 - d3)))).Norm();
+  const Vec3 cp = q - c;
+  const double d5 = ab * cp, d6 = ac * cp;
+  if (d6 >= 0 && d5 <= d6) return (q - c).Norm();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (q - (a + ac * (d2 / (d2 - d6)))).Norm();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+    return (q - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))))).Norm();
+  const double sum = va + vb + vc;
+  if (!(sum != 0)) return (q - a).Norm();
+  return (q - (a + ab * (vb / sum) + ac * (vc / sum))).Norm();
+}
+
+/// Stage 5b (extended method, inputs sampled on a grid): sends back to rest
+/// every moved vertex of a face whose motion swept over a grid node that the
+/// input's sampling classified (a node bracketing one of the face's input
+/// vertices on its grid edge) by more than `toleranceSteps` cells past the
+/// moved face. Repeats until no face sweeps a node (at rest, none does).
+/// A moved vertex is an inserted vertex with Placement::Moved (rest:
+/// plan.inserted[k].rest) or an original vertex away from `originalRest`
+/// (a projected zone vertex). Deterministic: serial, in face order.
+/// \pre placement and zone projection ran; subdivide() split the faces and
+///   nothing else changed the connectivity since; the mesh is compact.
+/// \return the counts; reverted inserted vertices get Placement::GridRevert.
+template <class MeshType>
+GridGuardStats revertGridContradictions(
+    MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels, const SamplingGrid &grid,
+    const std::vector<typename MeshType::CoordType> &originalRest, double toleranceSteps) {
+  using CoordType = typename MeshType::CoordType;
+  GridGuardStats stats;
+  stats.gridFound = grid.found;
+  if (!grid.found) return stats;
+  stats.step = grid.minStep();
+  const std::size_t n0 = plan.originalVertexCount;
+  const auto index = [&](const typename MeshType::VertexType *v) {
+    return std::size_t(vcg::tri::Index(m, v));
+  };
+  const auto restOf = [&](std::size_t v) -> Vec3 {
+    if (v >= n0) return plan.inserted[v - n0].rest;
+    return v < originalRest.size() ? Vec3::Construct(originalRest[v]) : positionOf(&m.vert[v]);
+  };
+  const auto isMoved = [&](std::size_t v) {
+    if (v >= n0) return labels.placement[&m.vert[v]] == Placement::Moved;
+    return v < originalRest.size() && m.vert[v].cP() != originalRest[v];
+  };
+  const auto hasMovedVertex = [&](const typename MeshType::FaceType &f) {
+    return isMoved(index(f.cV(0))) || isMoved(index(f.cV(1))) || isMoved(index(f.cV(2)));
+  };
+
+  // The faces that moved, and the input vertices among their corners.
+  std::vector<std::uint32_t> changed;
+  constexpr std::uint32_t kNone = ~std::uint32_t(0);
+  std::vector<std::uint32_t> slot(n0, kNone);
+  std::vector<std::uint32_t> sampled;  // input vertices of moved faces
+  for (std::size_t fi = 0; fi < m.face.size(); ++fi) {
+    const auto &f = m.face[fi];
+    if (f.IsD() || !hasMovedVertex(f)) continue;
+    changed.push_back(std::uint32_t(fi));
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t v = index(f.cV(k));
+      if (v < n0 && slot[v] == kNone) {
+        slot[v] = std::uint32_t(sampled.size());
+        sampled.push_back(std::uint32_t(v));
+      }
+    }
+  }
+  if (changed.empty()) return stats;
+  // Their normals in the input: the split keeps each face's area and normal
+  // in its children, so the faces around a vertex at rest sum to the input's.
+  std::vector<Vec3> normal(sampled.size(), Vec3(0, 0, 0));
+  for (const auto &f : m.face) {
+    if (f.IsD()) continue;
+    std::size_t vi[3];
+    bool wanted = false;
+    for (int k = 0; k < 3; ++k) {
+      vi[k] = index(f.cV(k));
+      wanted = wanted || (vi[k] < n0 && slot[vi[k]] != kNone);
+    }
+    if (!wanted) continue;
+    const Vec3 p0 = restOf(vi[0]), p1 = restOf(vi[1]), p2 = restOf(vi[2]);
+    const Vec3 n = (p1 - p0) ^ (p2 - p0);
+    for (int k = 0; k < 3; ++k)
+      if (vi[k] < n0 && slot[vi[k]] != kNone) normal[slot[vi[k]]] += n;
+  }
+  // The two nodes bracketing each such vertex on its grid edge: the one its
+  // normal points to is outside, the other inside (0: seen both ways). Only
+  // the nodes witness: marching cubes knows their side exactly, while it
+  // interpolates where the surface crosses the edge (near a sharp edge, a
+  // tenth of a cell off).
+  const auto key = [](const std::array<long, 3> &ijk) {
+    return (std::uint64_t(ijk[0] & 0x1fffff) << 42) | (std::uint64_t(ijk[1] & 0x1fffff) << 21) |
+           std::uint64_t(ijk[2] & 0x1fffff);
+  };
+  std::unordered_map<std::uint64_t, int> side;
+  for (std::size_t s = 0; s < sampled.size(); ++s) {
+    const Vec3 p = restOf(sampled[s]);
+    const int a = grid.edgeAxis(p);
+    const Vec3 &n = normal[s];
+    if (a < 0 || !(std::abs(n[a]) > 0.2 * n.Norm())) continue;
+    std::array<long, 3> lo{};
+    bool inRange = true;
+    for (int k = 0; k < 3; ++k)
+      inRange = inRange && (k == a ? grid.lineIndex(k, p[k], false, lo[k])
+                                   : grid.lineIndex(k, p[k] + 0.5 * grid.axis[k].step, false,
+                                                    lo[k]));  // the nearest line
+    if (!inRange) continue;
+    std::array<long, 3> hi = lo;
+    hi[a] += 1;
+    const int loSide = n[a] > 0 ? -1 : 1;
+    for (const auto &[ijk, nodeSide] : {std::pair{lo, loSide}, std::pair{hi, -loSide}}) {
+      const auto [it, added] = side.emplace(key(ijk), nodeSide);
+      if (!added && it->second != nodeSide) it->second = 0;
+    }
+  }
+
+  const double tolerance = toleranceSteps * stats.step;
+  std::vector<std::size_t> back;
+  for (int round = 0; round < 8; ++round) {
+    back.clear();
+    std::size_t kept = 0;
+    for (const std::uint32_t fi : changed) {
+      const auto &f = m.face[fi];
+      if (!hasMovedVertex(f)) continue;
+      changed[kept++] = fi;
+      std::array<Vec3, 3> before, after;
+      for (int k = 0; k < 3; ++k) {
+        before[k] = restOf(index(f.cV(k)));
+        after[k] = positionOf(f.cV(k));
+      }
+      // The nodes in the box of the motion (a face spans a cell or two; a
+      // box of more than kMaxNodesPerAxis lines per axis is not searched).
+      constexpr long kMaxNodesPerAxis = 8;
+      std::array<long, 3> from{}, to{};
+      bool searchable = true;
+      for (int a = 0; a < 3 && searchable; ++a) {
+        double lo = before[0][a], hi = lo;
+        for (int k = 0; k < 3; ++k)
+          lo = std::min({lo, before[k][a], after[k][a]}),
+          hi = std::max({hi, before[k][a], after[k][a]});
+        searchable = grid.lineIndex(a, lo, true, from[a]) && grid.lineIndex(a, hi, false, to[a]) &&
+                     to[a] - from[a] < kMaxNodesPerAxis;
+      }
+      if (!searchable) continue;
+      bool swept = false;
+      std::array<long, 3> ijk{};
+      for (ijk[0] = from[0]; ijk[0] <= to[0] && !swept; ++ijk[0])
+        for (ijk[1] = from[1]; ijk[1] <= to[1] && !swept; ++ijk[1])
+          for (ijk[2] = from[2]; ijk[2] <= to[2] && !swept; ++ijk[2]) {
+            const auto it = side.find(key(ijk));
+            if (it == side.end() || it->second == 0) continue;
+            const Vec3 q = grid.node(ijk);
+            stats.nodesTested += round == 0;
+            swept = inSweptPrism(q, before, after) && pointTriangleDistance(q, after) > tolerance;
+          }
+      if (!swept) continue;
+      stats.sweepingFaces += round == 0;
+      for (int k = 0; k < 3; ++k)
+        if (isMoved(index(f.cV(k)))) back.push_back(index(f.cV(k)));
+    }
+    changed.resize(kept);
+    if (back.empty()) break;
+    ++stats.rounds;
+    std::sort(back.begin(), back.end());
+    back.erase(std::unique(back.begin(), back.end()), back.end());
+    for (const std::size_t v : back) {
+      m.vert[v].P() = CoordType::Construct(restOf(v));
+      if (v >= n0) {
+        labels.placement[&m.vert[v]] = Placement::GridRevert;
+        ++stats.reverted;
+      } else {
+        m.vert[v].P() = originalRest[v];
+        ++stats.zoneReverted;
+      }
+    }
+  }
+  return stats;
+}
+
+}  // namespace edge_sharpener
