@@ -28,7 +28,7 @@ struct CliOptions {
   es::SharpenOptions extended;  // tuning of the extended method
   double degenerateAngleDeg = 1.0;
   bool keepContacts = false;
-  bool noGridGuard = false;
+  bool gridGuard = false;
   bool strict = false;                             // the strict plane guard's preset
   double borderTurnFactor = -1, maxOffPlane = -1;  // its settings one by one (-1: unset)
   bool noLengthCheck = false, noConvexityCheck = false;
@@ -77,7 +77,7 @@ int run(const CliOptions &cli) {
   opt.smoothMultiplier = cli.multiplier;
   opt.method = cli.method == "extended" ? es::Method::Extended : es::Method::Paper;
   opt.openRegionContacts = !cli.keepContacts;
-  opt.samplingGridGuard = !cli.noGridGuard;
+  opt.samplingGridGuard = cli.gridGuard;
   opt.setStrictPlaneGuard(cli.strict);
   if (cli.borderTurnFactor >= 0) opt.borderTurnThresholdFactor = cli.borderTurnFactor;
   if (cli.maxOffPlane >= 0) opt.maxSourceOffPlaneSpacings = cli.maxOffPlane;
@@ -186,9 +186,11 @@ int main(int argc, char **argv) {
                  "extended: keep a vertex at rest when a source vertex lies farther than this "
                  "many median edge lengths from its plane (0: off)")
       ->check(CLI::Range(0.0, 100.0));
-  app.add_flag("--no-grid-guard", cli.noGridGuard,
-               "extended: keep moves that sweep over a node of the input's marching-cubes grid "
-               "(the guard is on by default and only acts on inputs sampled on such a grid)");
+  app.add_flag("--grid-guard", cli.gridGuard,
+               "extended: on a marching-cubes resampling (its vertices on an axis-aligned grid), "
+               "send back a vertex whose move sweeps over a grid node the sampler saw on the "
+               "other side (blends and bevels hardly larger than a cell); not for "
+               "reconstructions such as Screened Poisson");
   app.add_option("--grid-tolerance", cli.extended.gridSweepToleranceCells,
                  "extended: a node counts as swept when it lies this many cells past the moved "
                  "face")

@@ -39,9 +39,12 @@ import meshlab  # noqa: E402
 
 METHODS = ("paper", "extended")
 # Every run is one of these variants of the CLI (the name is the run's "method").
-# The strict plane guard is opt-in: it runs at the default multiplier only.
+# The strict plane guard and the sampling-grid guard are opt-in: they run at the default
+# multiplier only.
 VARIANTS = {"paper": ["--method", "paper"], "extended": ["--method", "extended"],
-            "extended-strict": ["--method", "extended", "--strict"]}
+            "extended-strict": ["--method", "extended", "--strict"],
+            "extended-grid": ["--method", "extended", "--grid-guard"],
+            "extended-strict-grid": ["--method", "extended", "--strict", "--grid-guard"]}
 SWEPT_VARIANTS = METHODS
 DEFAULT_MULTIPLIER = 2.0
 SWEEP = (1.5, 2.0, 2.5, 3.0)

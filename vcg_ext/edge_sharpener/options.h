@@ -129,8 +129,11 @@ struct SharpenOptions {
   /// node of the input's sampling grid, when the input has one (marching
   /// cubes: sampling_grid.h): the sampler saw that node on the other side of
   /// the surface, so the sharp edge is not there (a blend or a bevel hardly
-  /// larger than a cell).
-  bool samplingGridGuard = true;
+  /// larger than a cell). Off by default: it assumes the grid holds the
+  /// signs of the true solid (a resampling such as MeshLab's Uniform Mesh
+  /// Resampling), while a reconstruction's grid (Screened Poisson) holds
+  /// those of a smoothed function, where it keeps real features rounded.
+  bool samplingGridGuard = false;
   /// ...by more than this many cells past the moved face (plane fits of a
   /// truly sharp edge graze nodes by a few thousandths of a cell).
   double gridSweepToleranceCells = 0.03;

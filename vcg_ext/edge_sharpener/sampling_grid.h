@@ -10,7 +10,18 @@
 // larger than a cell (the paper's Figure 11) from a chamfer cut by the
 // sampler: squaring off a fillet 1.7 cells in radius puts a node the sampler
 // saw outside (0.65 cells away) inside the solid; restoring a truly sharp
-// edge leaves every node where it was.
+// edge leaves every node where it was (the project's marching cubes of its
+// exact sharp shapes: no vertex sent back).
+//
+// Limits: the nodes are sparse witnesses (a squared-off blend is caught only
+// where a node falls between the blend and its sharp corner), and the signs
+// are those of the function the grid sampled: a resampling of the true solid
+// (Uniform Mesh Resampling, the marching cubes of a distance field), not a
+// reconstruction's smoothed function (Screened Poisson), whose signs keep
+// real features rounded. Hence opt-in (SharpenOptions::samplingGridGuard).
+// Marching cubes: Lorensen and Cline, SIGGRAPH 1987; the nodes' signs as the
+// exact data of a volume sampling are also what Extended Marching Cubes
+// (Kobbelt et al., SIGGRAPH 2001) builds its sharp features on.
 #pragma once
 
 #include <vcg/complex/complex.h>
