@@ -25,6 +25,8 @@
 #pragma once
 
 #include <vcg/complex/complex.h>
+#include <vcg/space/distance3.h>
+#include <vcg/space/triangle3.h>
 
 #include <algorithm>
 #include <array>
@@ -227,28 +229,12 @@ inline bool inSweptPrism(const Vec3 &q, const std::array<Vec3, 3> &before,
          detail::inTetrahedron(q, c0, a1, b1, c1);
 }
 
-/// Distance from q to the triangle t (closest point, Ericson's regions). Pure.
+/// Distance from q to the triangle t (vcglib's TrianglePointDistance). Pure.
 inline double pointTriangleDistance(const Vec3 &q, const std::array<Vec3, 3> &t) {
-  const Vec3 &a = t[0], &b = t[1], &c = t[2];
-  const Vec3 ab = b - a, ac = c - a, ap = q - a;
-  const double d1 = ab * ap, d2 = ac * ap;
-  if (d1 <= 0 && d2 <= 0) return (q - a).Norm();
-  const Vec3 bp = q - b;
-  const double d3 = ab * bp, d4 = ac * bp;
-  if (d3 >= 0 && d4 <= d3) return (q - b).Norm();
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (q - (a + ab * (d1 / (d1 - d3)))).Norm();
-  const Vec3 cp = q - c;
-  const double d5 = ab * cp, d6 = ac * cp;
-  if (d6 >= 0 && d5 <= d6) return (q - c).Norm();
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (q - (a + ac * (d2 / (d2 - d6)))).Norm();
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-    return (q - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))))).Norm();
-  const double sum = va + vb + vc;
-  if (!(sum != 0)) return (q - a).Norm();
-  return (q - (a + ab * (vb / sum) + ac * (vc / sum))).Norm();
+  double distance = 0;
+  Vec3 closest;
+  vcg::TrianglePointDistance(vcg::Triangle3<double>(t[0], t[1], t[2]), q, distance, closest);
+  return distance;
 }
 
 /// Stage 5b (extended method, inputs sampled on a grid): sends back to rest
@@ -403,12 +389,11 @@ GridGuardStats revertGridContradictions(
     std::sort(back.begin(), back.end());
     back.erase(std::unique(back.begin(), back.end()), back.end());
     for (const std::size_t v : back) {
-      m.vert[v].P() = CoordType::Construct(restOf(v));
+      m.vert[v].P() = CoordType::Construct(restOf(v));  // as placed at rest
       if (v >= n0) {
         labels.placement[&m.vert[v]] = Placement::GridRevert;
         ++stats.reverted;
       } else {
-        m.vert[v].P() = originalRest[v];
         ++stats.zoneReverted;
       }
     }
