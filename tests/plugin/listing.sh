@@ -12,9 +12,12 @@ section() { awk -v n="$1" '/^\\section f[0-9]+ /{on = (index($0, " " n " ") > 0)
 params() { section "$1" | sed -n 's/^<TR><TD> \\c \([A-Za-z0-9]*\) *<\/TD> *<TD> \(.*\) <\/TD> <TD><i>.*/\1|\2/p'; }
 
 check_filter() {
-  local name=$1 expected=$2 got
-  section "$name" | grep -q . || fail "filter '$name' not listed"
-  section "$name" | grep -q 'Edge-Sharpener: Recovering sharp features' ||
+  local name=$1 expected=$2 got text
+  # Read the section whole first: `section | grep -q` under pipefail fails
+  # whenever grep stops reading before awk has written everything (SIGPIPE).
+  text=$(section "$name")
+  [[ -n $text ]] || fail "filter '$name' not listed"
+  grep -q 'Edge-Sharpener: Recovering sharp features' <<<"$text" ||
     fail "'$name': description does not cite the paper"
   got=$(params "$name")
   [[ $got == "$expected" ]] || fail "'$name' parameters:"$'\n'"$got"$'\n'"expected:"$'\n'"$expected"
