@@ -196,6 +196,12 @@ int main(int argc, char **argv) {
                  "face")
       ->default_val(cli.extended.gridSweepToleranceCells)
       ->check(CLI::Range(0.0, 10.0));
+  app.add_option("--grid-blended-fraction", cli.extended.gridBlendedFeatureFraction,
+                 "extended: with --grid-guard, when this fraction of the moves between two "
+                 "regions went back, the rest of them go back too (a blend, not a sharp edge; "
+                 "0: off)")
+      ->default_val(cli.extended.gridBlendedFeatureFraction)
+      ->check(CLI::Range(0.0, 1.0));
   app.add_flag("--keep-contacts", cli.keepContacts,
                "extended: leave faces where two smooth regions touch in their regions");
   app.add_flag("--no-length-check", cli.noLengthCheck,

@@ -80,7 +80,9 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                           {"sweeping_faces", r.grid.sweepingFaces},
                           {"reverted", r.grid.reverted},
                           {"zone_reverted", r.grid.zoneReverted},
-                          {"rounds", r.grid.rounds}};
+                          {"rounds", r.grid.rounds},
+                          {"blended_features", r.grid.blendedFeatures},
+                          {"feature_reverted", r.grid.featureReverted}};
   return j;
 }
 

@@ -120,7 +120,9 @@ const OptionParam kSamplingGridGuard{
           "the edges of an axis-aligned grid, which is detected), a new vertex goes back to "
           "rest (fallback <i>grid_revert</i>) when sharpening would sweep the surface over a "
           "grid node that the sampler saw on the other side: the edge is a blend or a bevel "
-          "hardly larger than a cell, not a sharp edge. For resamplings of exact shapes (Uniform "
+          "hardly larger than a cell, not a sharp edge; when a tenth of the moves between two "
+          "regions go back so, the rest of them follow (a blend along its whole length). For "
+          "resamplings of exact shapes (Uniform "
           "Mesh Resampling); not for reconstructions (Screened Poisson), whose grid holds a "
           "smoothed surface. Does nothing on inputs without such a grid."));
     },

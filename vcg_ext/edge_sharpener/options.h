@@ -137,6 +137,12 @@ struct SharpenOptions {
   /// ...by more than this many cells past the moved face (plane fits of a
   /// truly sharp edge graze nodes by a few thousandths of a cell).
   double gridSweepToleranceCells = 0.03;
+  /// ...and when at least this fraction of the moves between two regions
+  /// went back so, the rest of them go back too (a feature is blended or
+  /// sharp along its length; the nodes witness only where they happen to
+  /// fall). 0 disables. On the exact sharp shapes nothing goes back, so any
+  /// small fraction separates; 0.1 leaves room for a stray witness.
+  double gridBlendedFeatureFraction = 0.1;
 
   // --- Extended method, strict plane guard (off by default; `--strict`) ---
 

@@ -80,13 +80,15 @@ struct IntersectionStats {
 /// Stage 5b, extended method: moved vertices sent back to rest because their
 /// faces swept over a node of the input's sampling grid (sampling_grid.h).
 struct GridGuardStats {
-  bool gridFound = false;         ///< the input lies on an axis-aligned sampling grid
-  double step = 0;                ///< its smallest cell size
-  std::size_t nodesTested = 0;    ///< sampled grid nodes in the swept volumes, first round
-  std::size_t sweepingFaces = 0;  ///< moved faces that swept over such a node, first round
-  std::size_t reverted = 0;       ///< inserted vertices sent back to rest
-  std::size_t zoneReverted = 0;   ///< projected zone vertices sent back to rest
-  std::size_t rounds = 0;         ///< rounds that found a swept node
+  bool gridFound = false;           ///< the input lies on an axis-aligned sampling grid
+  double step = 0;                  ///< its smallest cell size
+  std::size_t nodesTested = 0;      ///< sampled grid nodes in the swept volumes, first round
+  std::size_t sweepingFaces = 0;    ///< moved faces that swept over such a node, first round
+  std::size_t reverted = 0;         ///< inserted vertices sent back to rest
+  std::size_t zoneReverted = 0;     ///< projected zone vertices sent back to rest
+  std::size_t rounds = 0;           ///< rounds that found a swept node
+  std::size_t blendedFeatures = 0;  ///< region pairs whose moves went back as a whole
+  std::size_t featureReverted = 0;  ///< of `reverted`, those sent back with their feature
 };
 
 /// Extended method: segmentation and zone labelling.
@@ -167,7 +169,9 @@ inline std::string formatReport(const SharpenReport &r) {
     if (r.grid.gridFound)
       s << "axis-aligned, cell " << r.grid.step << "; " << r.grid.sweepingFaces
         << " moved faces swept over a sampled node, " << r.grid.reverted << " inserted and "
-        << r.grid.zoneReverted << " zone vertices sent back (" << r.grid.rounds << " rounds)\n";
+        << r.grid.zoneReverted << " zone vertices sent back (" << r.grid.rounds << " rounds); "
+        << r.grid.blendedFeatures << " blended features (" << r.grid.featureReverted
+        << " of those inserted vertices sent back with their feature)\n";
     else
       s << "none found (guard off)\n";
   }

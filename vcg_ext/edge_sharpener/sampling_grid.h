@@ -401,4 +401,65 @@ GridGuardStats revertGridContradictions(
   return stats;
 }
 
+/// Stage 5b, second step: a feature between two regions is blended or sharp
+/// along its whole length, while the grid nodes witness only where they
+/// happen to fall between a blend and its squared-off edge. So when at least
+/// `fraction` of the inserted vertices between two regions (by the regions
+/// of their two source vertices' planes) went back to rest as GridRevert,
+/// every other moved inserted vertex between them goes back too (corners:
+/// when any two of their three regions form such a pair). Deterministic.
+/// \pre revertGridContradictions() ran; `regionOf` is
+///   SupportPlanes::region (one entry per input vertex).
+/// \return the number of blended region pairs; adds the vertices it sends
+///   back to `stats.reverted` and `stats.featureReverted`.
+template <class MeshType>
+std::size_t revertBlendedFeatures(MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels,
+                                  const std::vector<int> &regionOf, double fraction,
+                                  GridGuardStats &stats) {
+  using CoordType = typename MeshType::CoordType;
+  const std::size_t n0 = plan.originalVertexCount;
+  if (!(fraction > 0) || stats.reverted == 0 || regionOf.size() < n0) return 0;
+  const auto pairKey = [&](const InsertedVertexSource &src, int i, int j) {
+    const auto a = std::uint32_t(regionOf[src.original[i]]);
+    const auto b = std::uint32_t(regionOf[src.original[j]]);
+    return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+  };
+  struct Tally {
+    std::size_t moves = 0, reverted = 0;
+  };
+  std::unordered_map<std::uint64_t, Tally> tally;  // chamfer-edge vertices per pair
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+    const InsertedVertexSource &src = plan.inserted[k];
+    const Placement p = labels.placement[&m.vert[n0 + k]];
+    if (src.originalCount != 2 || (p != Placement::Moved && p != Placement::GridRevert)) continue;
+    Tally &t = tally[pairKey(src, 0, 1)];
+    ++t.moves;
+    t.reverted += p == Placement::GridRevert;
+  }
+  std::size_t blendedPairs = 0;
+  for (auto &entry : tally) {
+    const bool blended = double(entry.second.reverted) >= fraction * double(entry.second.moves);
+    blendedPairs += blended;
+    entry.second.moves = blended;  // from here on: whether the pair is blended
+  }
+  const auto isBlended = [&](std::uint64_t key) {
+    const auto it = tally.find(key);
+    return it != tally.end() && it->second.moves != 0;
+  };
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+    auto &v = m.vert[n0 + k];
+    if (labels.placement[&v] != Placement::Moved) continue;
+    const InsertedVertexSource &src = plan.inserted[k];
+    bool back = false;
+    for (int i = 0; i < src.originalCount; ++i)
+      for (int j = i + 1; j < src.originalCount; ++j) back = back || isBlended(pairKey(src, i, j));
+    if (!back) continue;
+    v.P() = CoordType::Construct(src.rest);
+    labels.placement[&v] = Placement::GridRevert;
+    ++stats.reverted;
+    ++stats.featureReverted;
+  }
+  return blendedPairs;
+}
+
 }  // namespace edge_sharpener
