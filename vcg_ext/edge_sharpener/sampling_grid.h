@@ -419,32 +419,39 @@ std::size_t revertBlendedFeatures(MeshType &m, const SplitPlan &plan, MeshLabels
   using CoordType = typename MeshType::CoordType;
   const std::size_t n0 = plan.originalVertexCount;
   if (!(fraction > 0) || stats.reverted == 0 || regionOf.size() < n0) return 0;
+  // The pair of regions an inserted vertex lies between (kNoPair: a source
+  // without a plane, or both in one region: an internal crease, its own
+  // feature).
+  constexpr std::uint64_t kNoPair = ~std::uint64_t(0);
   const auto pairKey = [&](const InsertedVertexSource &src, int i, int j) {
-    const auto a = std::uint32_t(regionOf[src.original[i]]);
-    const auto b = std::uint32_t(regionOf[src.original[j]]);
-    return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+    const int a = regionOf[src.original[i]], b = regionOf[src.original[j]];
+    if (a < 0 || b < 0 || a == b) return kNoPair;
+    return (std::uint64_t(std::min(a, b)) << 32) | std::uint64_t(std::max(a, b));
   };
   struct Tally {
     std::size_t moves = 0, reverted = 0;
+    bool blended = false;
   };
   std::unordered_map<std::uint64_t, Tally> tally;  // chamfer-edge vertices per pair
   for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
     const InsertedVertexSource &src = plan.inserted[k];
     const Placement p = labels.placement[&m.vert[n0 + k]];
     if (src.originalCount != 2 || (p != Placement::Moved && p != Placement::GridRevert)) continue;
-    Tally &t = tally[pairKey(src, 0, 1)];
+    const std::uint64_t key = pairKey(src, 0, 1);
+    if (key == kNoPair) continue;
+    Tally &t = tally[key];
     ++t.moves;
     t.reverted += p == Placement::GridRevert;
   }
   std::size_t blendedPairs = 0;
   for (auto &entry : tally) {
-    const bool blended = double(entry.second.reverted) >= fraction * double(entry.second.moves);
-    blendedPairs += blended;
-    entry.second.moves = blended;  // from here on: whether the pair is blended
+    Tally &t = entry.second;
+    t.blended = t.reverted > 0 && double(t.reverted) >= fraction * double(t.moves);
+    blendedPairs += t.blended;
   }
   const auto isBlended = [&](std::uint64_t key) {
     const auto it = tally.find(key);
-    return it != tally.end() && it->second.moves != 0;
+    return it != tally.end() && it->second.blended;
   };
   for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
     auto &v = m.vert[n0 + k];
