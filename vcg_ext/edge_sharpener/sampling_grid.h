@@ -410,15 +410,15 @@ GridGuardStats revertGridContradictions(
 /// when any two of their three regions form such a pair). Deterministic.
 /// \pre revertGridContradictions() ran; `regionOf` is
 ///   SupportPlanes::region (one entry per input vertex).
-/// \return the number of blended region pairs; adds the vertices it sends
-///   back to `stats.reverted` and `stats.featureReverted`.
+/// Counts into `stats`: the blended pairs (blendedFeatures), and the
+/// vertices it sends back (reverted and featureReverted).
 template <class MeshType>
-std::size_t revertBlendedFeatures(MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels,
-                                  const std::vector<int> &regionOf, double fraction,
-                                  GridGuardStats &stats) {
+void revertBlendedFeatures(MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels,
+                           const std::vector<int> &regionOf, double fraction,
+                           GridGuardStats &stats) {
   using CoordType = typename MeshType::CoordType;
   const std::size_t n0 = plan.originalVertexCount;
-  if (!(fraction > 0) || stats.reverted == 0 || regionOf.size() < n0) return 0;
+  if (!(fraction > 0) || stats.reverted == 0 || regionOf.size() < n0) return;
   // The pair of regions an inserted vertex lies between (kNoPair: a source
   // without a plane, or both in one region: an internal crease, its own
   // feature).
@@ -443,11 +443,10 @@ std::size_t revertBlendedFeatures(MeshType &m, const SplitPlan &plan, MeshLabels
     ++t.moves;
     t.reverted += p == Placement::GridRevert;
   }
-  std::size_t blendedPairs = 0;
   for (auto &entry : tally) {
     Tally &t = entry.second;
     t.blended = t.reverted > 0 && double(t.reverted) >= fraction * double(t.moves);
-    blendedPairs += t.blended;
+    stats.blendedFeatures += t.blended;
   }
   const auto isBlended = [&](std::uint64_t key) {
     const auto it = tally.find(key);
@@ -466,7 +465,6 @@ std::size_t revertBlendedFeatures(MeshType &m, const SplitPlan &plan, MeshLabels
     ++stats.reverted;
     ++stats.featureReverted;
   }
-  return blendedPairs;
 }
 
 }  // namespace edge_sharpener

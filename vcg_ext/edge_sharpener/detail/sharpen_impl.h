@@ -151,8 +151,8 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
     if (opt.samplingGridGuard) {
       report.grid = revertGridContradictions(m, plan, labels, zones.samplingGrid,
                                              restBeforeProjection, opt.gridSweepToleranceCells);
-      report.grid.blendedFeatures = revertBlendedFeatures(
-          m, plan, labels, zones.support.region, opt.gridBlendedFeatureFraction, report.grid);
+      revertBlendedFeatures(m, plan, labels, zones.support.region, opt.gridBlendedFeatureFraction,
+                            report.grid);
       report.extended.projectedVertices -= report.grid.zoneReverted;
     }
   }
