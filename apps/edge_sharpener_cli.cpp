@@ -1,7 +1,7 @@
 // edge-sharpener: command-line front end of the Edge-Sharpener core.
 //
-//   edge-sharpener IN OUT [--multiplier X] [--no-length-check] [--colorize]
-//                         [--detect-only] [--json] [--reference EXACT]
+//   edge-sharpener IN OUT [options of the option table] [--detect-only] [--json]
+//                         [--reference EXACT]
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
@@ -9,11 +9,14 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <sstream>
+#include <vector>
 
 #include "capacity_hint.h"
 #include "edge_sharpener/edge_sharpener.h"
 #include "edge_sharpener/mesh_distance.h"
 #include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/option_table.h"
 #include "mesh_io.h"
 #include "report_json.h"
 
@@ -23,17 +26,72 @@ namespace {
 
 struct CliOptions {
   std::string input, output, reference;
-  double multiplier = 2.0;
-  std::string method = "paper";
-  es::SharpenOptions extended;  // tuning of the extended method
-  double degenerateAngleDeg = 1.0;
-  bool keepContacts = false;
-  bool gridGuard = false;
-  bool strict = false;                             // the strict plane guard's preset
-  double borderTurnFactor = -1, maxOffPlane = -1;  // its settings one by one (-1: unset)
-  bool noLengthCheck = false, noConvexityCheck = false;
-  bool colorize = false, detectOnly = false, json = false, quiet = false;
+  bool detectOnly = false, json = false, quiet = false;
+  /// One slot per row of the option table: the value given on the command
+  /// line (numbers and flags as doubles, choices by name), and whether it was.
+  std::vector<double> number = std::vector<double>(es::optionTable().size(), 0.0);
+  std::vector<std::string> choice = std::vector<std::string>(es::optionTable().size());
+  std::vector<CLI::Option *> given = std::vector<CLI::Option *>(es::optionTable().size());
+
+  /// The core's options: its defaults, then every option given, in table order
+  /// (so a preset such as --strict comes before the settings it presets).
+  es::SharpenOptions sharpenOptions() const {
+    es::SharpenOptions opt;
+    const auto &table = es::optionTable();
+    for (std::size_t i = 0; i < table.size(); ++i) {
+      if (given[i]->count() == 0) continue;
+      const es::OptionSpec &spec = table[i];
+      switch (spec.type) {
+        case es::OptionType::Flag: spec.set(opt, spec.defaultValue() != 0 ? 0.0 : 1.0); break;
+        case es::OptionType::Choice: spec.set(opt, spec.choiceIndex(choice[i])); break;
+        default: spec.set(opt, number[i]);
+      }
+    }
+    return opt;
+  }
 };
+
+std::string numberText(double value) {
+  std::ostringstream s;
+  s << value;
+  return s.str();
+}
+
+/// Every row of the option table as a command-line option, in its group
+/// (ordinary options first in --help).
+void addTableOptions(CLI::App &app, CliOptions &cli) {
+  const auto &table = es::optionTable();
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const es::OptionSpec &spec = table[i];
+    std::string help(spec.help);
+    if (!spec.unit.empty()) help += " [" + std::string(spec.unit) + "]";
+    const std::string flag(spec.cliFlag);
+    CLI::Option *o = nullptr;
+    if (spec.type == es::OptionType::Flag) {
+      // A flag turns its option from the default to the other value.
+      if (spec.defaultValue() != 0) help = "turn off the " + std::string(spec.label) + ": " + help;
+      o = app.add_flag(flag)->description(help);
+    } else if (spec.type == es::OptionType::Choice) {
+      std::vector<std::string> names(spec.choices.begin(), spec.choices.end());
+      o = app.add_option(flag, cli.choice[i], help)
+              ->check(CLI::IsMember(names))
+              ->default_str(std::string(spec.choiceName(spec.defaultValue())));
+    } else {
+      o = app.add_option(flag, cli.number[i], help)
+              ->check(CLI::Validator(
+                  [&spec](std::string &text) {
+                    double value = 0;
+                    if (!CLI::detail::lexical_cast(text, value)) return text + " is not a number";
+                    return spec.problemWith(value);
+                  },
+                  "", "option range"))
+              ->default_str(numberText(spec.defaultValue()))
+              ->type_name(spec.type == es::OptionType::Integer ? "INT" : "FLOAT");
+    }
+    o->group(es::toString(spec.group));
+    cli.given[i] = o;
+  }
+}
 
 bool stderrProgress(const int percent, const char *stage) {
   std::fprintf(stderr, "[%3d%%] %s\n", percent, stage);
@@ -73,18 +131,8 @@ int run(const CliOptions &cli) {
     before = es::measureDistance(m, reference);
   }
 
-  es::SharpenOptions opt = cli.extended;  // carries the extended method's tuning flags
-  opt.smoothMultiplier = cli.multiplier;
-  opt.method = cli.method == "extended" ? es::Method::Extended : es::Method::Paper;
-  opt.openRegionContacts = !cli.keepContacts;
-  opt.samplingGridGuard = cli.gridGuard;
-  opt.setStrictPlaneGuard(cli.strict);
-  if (cli.borderTurnFactor >= 0) opt.borderTurnThresholdFactor = cli.borderTurnFactor;
-  if (cli.maxOffPlane >= 0) opt.maxSourceOffPlaneSpacings = cli.maxOffPlane;
-  opt.edgeLengthCheck = !cli.noLengthCheck;
-  opt.convexityCheck = !cli.noConvexityCheck;
-  opt.degenerateAngleRad = cli.degenerateAngleDeg * M_PI / 180.0;
-  opt.colorize = cli.colorize || cli.detectOnly;
+  es::SharpenOptions opt = cli.sharpenOptions();
+  opt.colorize = opt.colorize || cli.detectOnly;
   constexpr int kProgressFaces = 200000;  // report stages on long runs only
   if (!cli.quiet && m.FN() >= kProgressFaces) opt.progress = stderrProgress;
 
@@ -103,6 +151,7 @@ int run(const CliOptions &cli) {
   if (!cli.reference.empty()) after = es::measureDistance(m, reference);
   if (cli.json) {
     nlohmann::json j = es::reportToJson(report);
+    j["options"] = es::optionsToJson(opt);
     j["seconds"] = seconds;
     j["input_file"] = cli.input;
     j["output_file"] = cli.output;
@@ -134,85 +183,7 @@ int main(int argc, char **argv) {
       "or scanning cut into chamfers (Attene et al. 2003). Reads and writes PLY, OFF, OBJ, STL."};
   app.add_option("input", cli.input, "mesh to sharpen")->required()->check(CLI::ExistingFile);
   app.add_option("output", cli.output, "where to write the result")->required();
-  app.add_option("--multiplier", cli.multiplier,
-                 "smooth-edge threshold as a multiple of the mean normal angle")
-      ->default_val(2.0)
-      ->check(CLI::PositiveNumber);
-  app.add_option("--method", cli.method,
-                 "paper: the 2003 method as published; extended: feature zones of any width")
-      ->default_val("paper")
-      ->check(CLI::IsMember({"paper", "extended"}));
-  app.add_option("--min-region-depth", cli.extended.minRegionDepth,
-                 "extended: thinner smooth regions (in hops) are corridors of the feature zone")
-      ->default_val(cli.extended.minRegionDepth)
-      ->check(CLI::Range(0, 100));
-  app.add_option("--support-rings", cli.extended.supportRings,
-                 "extended: face rings used to fit a region's plane")
-      ->default_val(cli.extended.supportRings)
-      ->check(CLI::Range(1, 20));
-  app.add_option("--max-projection", cli.extended.maxProjectionFactor,
-                 "extended: longest move of a zone vertex onto its region's plane, in mean edge "
-                 "lengths (0: never)")
-      ->default_val(cli.extended.maxProjectionFactor)
-      ->check(CLI::Range(0.0, 10.0));
-  app.add_option("--apex-factor", cli.extended.apexHeightFactor,
-                 "extended: keep a vertex at rest when the planes meet this many times higher "
-                 "above its chamfer than their angle allows (0: off)")
-      ->default_val(cli.extended.apexHeightFactor)
-      ->check(CLI::Range(0.0, 100.0));
-  app.add_option("--length-factor", cli.extended.extendedEdgeLengthFactor,
-                 "extended: the edge-length check allows this multiple of the longest input edge")
-      ->default_val(cli.extended.extendedEdgeLengthFactor)
-      ->check(CLI::Range(1.0, 100.0));
-  app.add_option("--max-displacement", cli.extended.maxDisplacementSpacings,
-                 "extended: keep a vertex at rest when the planes meet farther than this many "
-                 "median edge lengths from it (0: off)")
-      ->default_val(cli.extended.maxDisplacementSpacings)
-      ->check(CLI::Range(0.0, 1000.0));
-  app.add_option("--spread-ratio", cli.extended.maxSupportSpreadRatio,
-                 "extended: keep a vertex at rest when its regions turn by more than this "
-                 "fraction of the angle between their planes (a blend; 0: off)")
-      ->default_val(cli.extended.maxSupportSpreadRatio)
-      ->check(CLI::Range(0.0, 10.0));
-  app.add_flag("--strict", cli.strict,
-               "extended: strict plane guard (--border-turn 1 --max-off-plane 0.3, planes fitted "
-               "around the flat faces away from the zone): keeps blends and finely facetted "
-               "curves at rest; also keeps wide bevels of coarse remeshings");
-  app.add_option("--border-turn", cli.borderTurnFactor,
-                 "extended: return to the zone the region faces next to it that turn from their "
-                 "region's plane by more than this multiple of the smooth threshold (0: off)")
-      ->check(CLI::Range(0.0, 100.0));
-  app.add_option("--max-off-plane", cli.maxOffPlane,
-                 "extended: keep a vertex at rest when a source vertex lies farther than this "
-                 "many median edge lengths from its plane (0: off)")
-      ->check(CLI::Range(0.0, 100.0));
-  app.add_flag("--grid-guard", cli.gridGuard,
-               "extended: on a marching-cubes resampling (its vertices on an axis-aligned grid), "
-               "send back a vertex whose move sweeps over a grid node the sampler saw on the "
-               "other side (blends and bevels hardly larger than a cell); not for "
-               "reconstructions such as Screened Poisson");
-  app.add_option("--grid-tolerance", cli.extended.gridSweepToleranceCells,
-                 "extended: a node counts as swept when it lies this many cells past the moved "
-                 "face")
-      ->default_val(cli.extended.gridSweepToleranceCells)
-      ->check(CLI::Range(0.0, 10.0));
-  app.add_option("--grid-blended-fraction", cli.extended.gridBlendedFeatureFraction,
-                 "extended: with --grid-guard, when this fraction of the moves between two "
-                 "regions went back, the rest of them go back too (a blend, not a sharp edge; "
-                 "0: off)")
-      ->default_val(cli.extended.gridBlendedFeatureFraction)
-      ->check(CLI::Range(0.0, 1.0));
-  app.add_flag("--keep-contacts", cli.keepContacts,
-               "extended: leave faces where two smooth regions touch in their regions");
-  app.add_flag("--no-length-check", cli.noLengthCheck,
-               "allow placements that create edges longer than the input's longest");
-  app.add_flag("--no-convexity-check", cli.noConvexityCheck,
-               "also move vertices of chamfers bordered by a concave and a convex edge");
-  app.add_option("--degenerate-angle", cli.degenerateAngleDeg,
-                 "triangles with an angle below this (degrees) are removed after sharpening")
-      ->default_val(1.0)
-      ->check(CLI::Range(0.0, 59.0));
-  app.add_flag("--colorize", cli.colorize, "paint the paper's colours into the output");
+  addTableOptions(app, cli);
   app.add_flag("--detect-only", cli.detectOnly,
                "only detect: colour and select chamfer/corner faces, no geometry change");
   app.add_flag("--json", cli.json, "print the report as JSON");

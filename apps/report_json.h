@@ -3,9 +3,27 @@
 
 #include <nlohmann/json.hpp>
 
+#include "edge_sharpener/option_table.h"
 #include "edge_sharpener/report.h"
 
 namespace edge_sharpener {
+
+/// The options a run used, one key per row of the option table (angles in
+/// degrees, as entered).
+inline nlohmann::json optionsToJson(const SharpenOptions &opt) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const OptionSpec &spec : optionTable()) {
+    const std::string key(spec.key);
+    const double value = spec.get(opt);
+    switch (spec.type) {
+      case OptionType::Flag: j[key] = value != 0; break;
+      case OptionType::Choice: j[key] = std::string(spec.choiceName(value)); break;
+      case OptionType::Integer: j[key] = int(value); break;
+      case OptionType::Real: j[key] = value; break;
+    }
+  }
+  return j;
+}
 
 inline nlohmann::json reportToJson(const SharpenReport &r) {
   nlohmann::json placement = {{"moved", r.placement.moved()},

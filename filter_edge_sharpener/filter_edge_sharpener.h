@@ -1,13 +1,10 @@
 // MeshLab 2020.09 filter plugin for Edge-Sharpener (Attene, Falcidieno,
-// Rossignac, Spagnuolo, SGP 2003). A thin adapter: it reads the filter
-// parameters, prepares the CMeshO (FF adjacency, colours, compact vectors),
-// checks the input, makes one call into vcg_ext/edge_sharpener and logs the
-// report. All geometry lives in the core.
+// Rossignac, Spagnuolo, SGP 2003). A thin adapter: the MeshFilterInterface
+// glue around filter_common.h, which reads the parameters, prepares the
+// CMeshO, makes one call into vcg_ext/edge_sharpener and logs the report.
 #pragma once
 
 #include <common/interfaces.h>
-
-#include <string>
 
 class FilterEdgeSharpenerPlugin : public QObject, public MeshFilterInterface {
   Q_OBJECT
@@ -34,8 +31,4 @@ class FilterEdgeSharpenerPlugin : public QObject, public MeshFilterInterface {
   void initParameterSet(QAction *action, MeshModel &m, RichParameterList &par) override;
   bool applyFilter(QAction *action, MeshDocument &md, const RichParameterList &par,
                    vcg::CallBackPos *cb) override;
-
- private:
-  /// Reports why the filter did not run (error message + log); returns false.
-  bool refuse(const std::string &why);
 };

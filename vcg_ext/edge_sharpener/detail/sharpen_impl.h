@@ -12,6 +12,7 @@
 #include "../filters.h"
 #include "../input_check.h"
 #include "../intersection_guard.h"
+#include "../option_table.h"
 #include "../placement.h"
 #include "../sampling_grid.h"
 #include "../smooth_edges.h"
@@ -89,12 +90,7 @@ template <class MeshType>
 SharpenReport validate(MeshType &m, const SharpenOptions &opt) {
   vcg::tri::RequireFFAdjacency(m);
   vcg::tri::RequireCompactness(m);
-  if (!(opt.smoothMultiplier > 0) || !std::isfinite(opt.smoothMultiplier))
-    throw InputError("smooth-edge multiplier must be a positive number");
-  if (!(opt.degenerateAngleRad >= 0 && opt.degenerateAngleRad < M_PI / 3))
-    throw InputError("degenerate-triangle angle must be in [0, 60) degrees");
-  if (!(opt.parallelAngleRad >= 0 && opt.parallelAngleRad < M_PI / 2))
-    throw InputError("parallel-plane tolerance must be in [0, 90) degrees");
+  if (std::string problem = findOptionProblem(opt); !problem.empty()) throw InputError(problem);
   const std::string problem = findInputProblem(m);
   if (!problem.empty()) throw InputError(problem);
   SharpenReport report;

@@ -1,0 +1,718 @@
+// One declaration per option of SharpenOptions: the table below drives the
+// command line, the MeshLab adapters, the Python binding, validation and the
+// JSON report. Adding an option is one field in options.h and one row here.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "options.h"
+
+namespace edge_sharpener {
+
+/// How an option's value reads and is entered (values travel as doubles:
+/// flags 0/1, choices their index, angles in degrees).
+enum class OptionType { Flag, Integer, Real, Choice };
+
+/// Who sets the option. `Ordinary` options are what users see first (CLI
+/// help, MeshLab dialog, Blender panel); the others are one method's tuning.
+enum class OptionGroup { Ordinary, PaperTuning, ExtendedTuning, StrictGuard, GridGuard };
+
+inline const char *toString(OptionGroup g) {
+  switch (g) {
+    case OptionGroup::Ordinary: return "Options";
+    case OptionGroup::PaperTuning: return "Paper method tuning";
+    case OptionGroup::ExtendedTuning: return "Extended method tuning";
+    case OptionGroup::StrictGuard: return "Extended method: strict plane guard";
+    case OptionGroup::GridGuard: return "Extended method: sampling-grid guard";
+  }
+  return "";
+}
+
+/// Which MeshLab filters show an option (bit mask).
+enum MeshLabFilterMask : unsigned { kNotInMeshLab = 0, kInSharpen = 1, kInDetect = 2 };
+
+/// One option, declared once.
+struct OptionSpec {
+  std::string_view key;          ///< snake_case: Python keyword and JSON key
+  std::string_view cliFlag;      ///< with dashes; a flag whose default is on turns it off
+  std::string_view meshlabName;  ///< parameter name in .mlx scripts (empty: not in MeshLab)
+  std::string_view label;        ///< short title (MeshLab dialog, Blender panel)
+  std::string_view help;         ///< one plain-text paragraph
+  OptionType type;
+  OptionGroup group;
+  std::string_view unit;      ///< of the value as entered ("deg", "median edge lengths", ...)
+  double minValue, maxValue;  ///< allowed range, in the unit above
+  bool minExclusive;          ///< the value must be above minValue, not equal to it
+  unsigned meshlabFilters;    ///< MeshLabFilterMask bits
+  std::vector<std::string_view> choices;       ///< Choice: the names (CLI, Python, JSON)
+  std::vector<std::string_view> choiceLabels;  ///< Choice: the titles (MeshLab)
+  double (*get)(const SharpenOptions &);       ///< the value, in the unit above
+  void (*set)(SharpenOptions &, double);       ///< sets it (assumes a valid value)
+
+  bool ordinary() const { return group == OptionGroup::Ordinary; }
+  double defaultValue() const { return get(SharpenOptions{}); }
+  /// Why `value` is not allowed, or empty.
+  std::string problemWith(double value) const;
+  /// The name of choice `index`, for Choice options.
+  std::string_view choiceName(double index) const { return choices.at(std::size_t(index)); }
+  /// The index of choice `name`, or -1.
+  int choiceIndex(std::string_view name) const {
+    for (std::size_t i = 0; i < choices.size(); ++i)
+      if (choices[i] == name) return int(i);
+    return -1;
+  }
+};
+
+namespace detail {
+constexpr double kDegPerRad = 180.0 / M_PI;
+/// Rounded to 1e-9 degree: 15 degrees reads 15, not 14.999999999999998.
+inline double degrees(double rad) {
+  return std::round(rad * kDegPerRad * 1e9) / 1e9;
+}
+inline double radians(double deg) {
+  return deg * M_PI / 180.0;
+}
+}  // namespace detail
+
+// Each row names its field once in `get` and once in `set`.
+#define ES_REAL(field)                                     \
+  [](const SharpenOptions &o) { return double(o.field); }, \
+      [](SharpenOptions &o, double v) { o.field = v; }
+#define ES_INT(field)                                      \
+  [](const SharpenOptions &o) { return double(o.field); }, \
+      [](SharpenOptions &o, double v) { o.field = int(v); }
+#define ES_FLAG(field)                                         \
+  [](const SharpenOptions &o) { return o.field ? 1.0 : 0.0; }, \
+      [](SharpenOptions &o, double v) { o.field = v != 0; }
+#define ES_ANGLE(field)                                             \
+  [](const SharpenOptions &o) { return detail::degrees(o.field); }, \
+      [](SharpenOptions &o, double v) { o.field = detail::radians(v); }
+
+/// Every option, ordinary ones first; within a group, the order in which
+/// they are applied (the strict preset before the settings it presets).
+inline const std::vector<OptionSpec> &optionTable() {
+  using T = OptionType;
+  using G = OptionGroup;
+  constexpr unsigned kBoth = kInSharpen | kInDetect;
+  static const std::vector<OptionSpec> table{
+      // ----- what users set
+      {"method",
+       "--method",
+       "method",
+       "Method",
+       "paper: the 2003 method exactly as published (chamfers one triangle wide); extended: "
+       "smooth regions are segmented and the feature zone between them may be of any width "
+       "(marching-cubes bands, corner patches); zone vertices move onto their region's "
+       "fitted plane, never the vertices of smooth regions.",
+       T::Choice,
+       G::Ordinary,
+       "",
+       0,
+       1,
+       false,
+       kBoth,
+       {"paper", "extended"},
+       {"Paper (2003)", "Extended (feature zones)"},
+       [](const SharpenOptions &o) { return o.method == Method::Extended ? 1.0 : 0.0; },
+       [](SharpenOptions &o, double v) { o.method = v == 1 ? Method::Extended : Method::Paper; }},
+      {"multiplier",
+       "--multiplier",
+       "smoothMultiplier",
+       "Smooth-edge multiplier",
+       "An edge is smooth when the angle between the normals of its two faces is below this "
+       "multiple of the mean of that angle over the whole mesh (paper: 2). Smaller values find "
+       "fewer smooth regions; larger values may take curved chamfers for smooth surface.",
+       T::Real,
+       G::Ordinary,
+       "x mean normal angle",
+       0,
+       100,
+       true,
+       kBoth,
+       {},
+       {},
+       ES_REAL(smoothMultiplier)},
+      {"edge_length_check",
+       "--no-length-check",
+       "edgeLengthCheck",
+       "Edge-length check",
+       "Leave an inserted vertex in the middle of its chamfer edge or corner triangle when "
+       "moving it would create an edge longer than the longest edge of the input (paper, "
+       "Figure 7). Keep it on: without it, nearly parallel planes can send vertices far away.",
+       T::Flag,
+       G::Ordinary,
+       "",
+       0,
+       1,
+       false,
+       kInSharpen,
+       {},
+       {},
+       ES_FLAG(edgeLengthCheck)},
+      {"colorize",
+       "--colorize",
+       "colorize",
+       "Colorize",
+       "Paint the labels into per-face colour (smooth regions red, chamfer triangles blue, "
+       "corner triangles green, others grey) and per-vertex colour (inserted vertices: moved "
+       "yellow, kept at the midpoint by a fallback in another colour).",
+       T::Flag,
+       G::Ordinary,
+       "",
+       0,
+       1,
+       false,
+       kInSharpen,
+       {},
+       {},
+       ES_FLAG(colorize)},
+      {"degenerate_angle_deg",
+       "--degenerate-angle",
+       "degenerateAngleDeg",
+       "Degenerate angle (deg)",
+       "After sharpening, new triangles with an angle below this many degrees are removed "
+       "(paper: 1 degree).",
+       T::Real,
+       G::Ordinary,
+       "deg",
+       0,
+       59,
+       false,
+       kInSharpen,
+       {},
+       {},
+       ES_ANGLE(degenerateAngleRad)},
+
+      // ----- the paper's degenerate cases
+      {"convexity_check",
+       "--no-convexity-check",
+       "",
+       "Convexity check",
+       "Keep a new vertex unmoved when its chamfer is bordered by a concave edge on one side "
+       "and a convex edge on the other (paper, section 3).",
+       T::Flag,
+       G::PaperTuning,
+       "",
+       0,
+       1,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_FLAG(convexityCheck)},
+      {"parallel_angle_deg",
+       "--parallel-angle",
+       "",
+       "Parallel-plane tolerance",
+       "Two planes whose normals are closer than this angle count as parallel; three normals "
+       "whose triple product is below its sine count as coplanar.",
+       T::Real,
+       G::PaperTuning,
+       "deg",
+       0,
+       89,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_ANGLE(parallelAngleRad)},
+
+      // ----- extended method
+      {"min_region_depth",
+       "--min-region-depth",
+       "",
+       "Minimum region depth",
+       "A smooth region whose vertices all lie fewer than this many hops from its border is a "
+       "corridor (a regular chamfer band) and joins the feature zone.",
+       T::Integer,
+       G::ExtendedTuning,
+       "hops",
+       0,
+       100,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_INT(minRegionDepth)},
+      {"open_region_contacts",
+       "--keep-contacts",
+       "",
+       "Open region contacts",
+       "Return to the feature zone the region faces around vertices where two smooth regions "
+       "touch.",
+       T::Flag,
+       G::ExtendedTuning,
+       "",
+       0,
+       1,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_FLAG(openRegionContacts)},
+      {"open_internal_creases",
+       "--keep-internal-creases",
+       "",
+       "Open internal creases",
+       "Return to the feature zone the region faces around internal creases (a non-smooth "
+       "edge inside one region).",
+       T::Flag,
+       G::ExtendedTuning,
+       "",
+       0,
+       1,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_FLAG(openInternalCreases)},
+      {"internal_crease_angle_deg",
+       "--internal-crease-angle",
+       "",
+       "Internal crease angle",
+       "An internal crease turns its face normals by more than this angle; below it, a "
+       "non-smooth edge inside a region is marching-cubes noise.",
+       T::Real,
+       G::ExtendedTuning,
+       "deg",
+       0,
+       180,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_ANGLE(internalCreaseAngleRad)},
+      {"internal_crease_threshold_factor",
+       "--internal-crease-factor",
+       "",
+       "Internal crease factor",
+       "...and by more than this multiple of the smooth-edge threshold (a coarse sampling of a "
+       "curved surface has large angles everywhere).",
+       T::Real,
+       G::ExtendedTuning,
+       "x smooth threshold",
+       0,
+       100,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(internalCreaseThresholdFactor)},
+      {"same_region_feature_angle_deg",
+       "--same-region-angle",
+       "",
+       "Same-region feature angle",
+       "Two vertices of one region whose planes turn by more than this angle lie on different "
+       "surfaces: a chamfer edge may join them (0: one region is one surface).",
+       T::Real,
+       G::ExtendedTuning,
+       "deg",
+       0,
+       180,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_ANGLE(sameRegionFeatureAngleRad)},
+      {"support_rings",
+       "--support-rings",
+       "",
+       "Support rings",
+       "Face rings around a region's border vertex used to fit its plane.",
+       T::Integer,
+       G::ExtendedTuning,
+       "rings",
+       1,
+       20,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_INT(supportRings)},
+      {"label_slack_hops",
+       "--label-slack",
+       "",
+       "Label slack",
+       "A zone vertex considers the regions reaching it within this many hops of the closest "
+       "one.",
+       T::Integer,
+       G::ExtendedTuning,
+       "hops",
+       0,
+       100,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_INT(labelSlackHops)},
+      {"max_label_hops",
+       "--max-label-hops",
+       "",
+       "Maximum label distance",
+       "A zone vertex takes region labels from at most this many hops away: a region's plane "
+       "extrapolated farther misses a curved surface.",
+       T::Integer,
+       G::ExtendedTuning,
+       "hops",
+       0,
+       100,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_INT(maxLabelHops)},
+      {"max_projection_factor",
+       "--max-projection",
+       "",
+       "Maximum projection",
+       "Longest move of a zone vertex onto its region's plane, in mean edge lengths (0: "
+       "never).",
+       T::Real,
+       G::ExtendedTuning,
+       "mean edge lengths",
+       0,
+       10,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(maxProjectionFactor)},
+      {"extended_edge_length_factor",
+       "--length-factor",
+       "",
+       "Edge-length factor",
+       "The edge-length check allows this multiple of the longest input edge (the tip of an "
+       "acute edge lies well beyond its chamfer).",
+       T::Real,
+       G::ExtendedTuning,
+       "x longest edge",
+       1,
+       100,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(extendedEdgeLengthFactor)},
+      {"max_displacement_spacings",
+       "--max-displacement",
+       "",
+       "Maximum displacement",
+       "Keep a vertex at rest when the planes meet farther than this many median edge lengths "
+       "from it (0: off).",
+       T::Real,
+       G::ExtendedTuning,
+       "median edge lengths",
+       0,
+       1000,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(maxDisplacementSpacings)},
+      {"apex_height_factor",
+       "--apex-factor",
+       "",
+       "Apex factor",
+       "Keep a vertex at rest when the planes meet this many times higher above its chamfer "
+       "than their angle allows (0: off).",
+       T::Real,
+       G::ExtendedTuning,
+       "",
+       0,
+       100,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(apexHeightFactor)},
+      {"max_support_spread_ratio",
+       "--spread-ratio",
+       "",
+       "Spread ratio",
+       "Keep a vertex at rest when its regions turn, over the fitted neighbourhood, by more "
+       "than this fraction of the angle between their planes (a blend; 0: off).",
+       T::Real,
+       G::ExtendedTuning,
+       "",
+       0,
+       10,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(maxSupportSpreadRatio)},
+      {"intermediate_plane_tolerance",
+       "--intermediate-tolerance",
+       "",
+       "Intermediate-plane tolerance",
+       "Keep a vertex at rest when it would pass through the plane of a third region whose "
+       "normal lies between the flanks' by more than this fraction of its displacement "
+       "(negative: off).",
+       T::Real,
+       G::ExtendedTuning,
+       "",
+       -1,
+       10,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(intermediatePlaneTolerance)},
+      {"max_bend_fraction",
+       "--bend-fraction",
+       "",
+       "Bend fraction",
+       "Keep a vertex at rest when a flank's region, bending across the feature, would leave "
+       "its plane by more than this fraction of the vertex's displacement (negative: off).",
+       T::Real,
+       G::ExtendedTuning,
+       "",
+       -1,
+       10,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(maxBendFraction)},
+      {"min_bend_spread_deg",
+       "--bend-spread",
+       "",
+       "Bend spread",
+       "...tested where the fitted faces spread by at least this angle.",
+       T::Real,
+       G::ExtendedTuning,
+       "deg",
+       0,
+       180,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_ANGLE(minBendSpreadRad)},
+      {"min_bend_fit_quality",
+       "--bend-fit-quality",
+       "",
+       "Bend fit quality",
+       "...or where the fitted faces' normals follow their position this well (0 to 1).",
+       T::Real,
+       G::ExtendedTuning,
+       "",
+       0,
+       1,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(minBendFitQuality)},
+      {"intermediate_slack_deg",
+       "--intermediate-slack",
+       "",
+       "Intermediate slack",
+       "How far a third region's normal may lie off the arc between the flanks' normals and "
+       "still count as between them.",
+       T::Real,
+       G::ExtendedTuning,
+       "deg",
+       0,
+       180,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_ANGLE(intermediateSlackRad)},
+      {"fit_trim_angle_deg",
+       "--fit-trim-angle",
+       "",
+       "Fit trim angle",
+       "A region's plane is refitted without its faces turned more than this from the first "
+       "fit (0: no refit).",
+       T::Real,
+       G::ExtendedTuning,
+       "deg",
+       0,
+       180,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_ANGLE(fitTrimAngleRad)},
+
+      // ----- extended method, strict plane guard (the preset first)
+      {"strict",
+       "--strict",
+       "strictPlaneGuard",
+       "Strict plane guard (extended)",
+       "Extended method only. Region faces next to the feature zone that turn away from their "
+       "region's plane return to the zone, the planes are fitted around the flat faces away "
+       "from the zone, and an inserted vertex stays at rest when a vertex it comes from lies "
+       "more than 0.3 median edge lengths off its plane. Keeps blends and finely facetted "
+       "curves rounded, but also leaves the wide bevels of coarse remeshings and the tips of "
+       "acute corners chamfered.",
+       T::Flag,
+       G::StrictGuard,
+       "",
+       0,
+       1,
+       false,
+       kBoth,
+       {},
+       {},
+       [](const SharpenOptions &o) { return o.maxSourceOffPlaneSpacings > 0 ? 1.0 : 0.0; },
+       [](SharpenOptions &o, double v) { o.setStrictPlaneGuard(v != 0); }},
+      {"border_turn_threshold_factor",
+       "--border-turn",
+       "",
+       "Border turn",
+       "Return to the zone the region faces next to it that turn from their region's plane by "
+       "more than this multiple of the smooth threshold (0: off; strict: 1).",
+       T::Real,
+       G::StrictGuard,
+       "x smooth threshold",
+       0,
+       100,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(borderTurnThresholdFactor)},
+      {"max_source_off_plane_spacings",
+       "--max-off-plane",
+       "",
+       "Maximum off-plane distance",
+       "Keep a vertex at rest when a source vertex lies farther than this many median edge "
+       "lengths from its plane (0: off; strict: 0.3).",
+       T::Real,
+       G::StrictGuard,
+       "median edge lengths",
+       0,
+       100,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(maxSourceOffPlaneSpacings)},
+      {"fit_seed_flat_angle_deg",
+       "--fit-seed-flat-angle",
+       "",
+       "Flat seed angle",
+       "Fit a region's plane near the zone around its faces away from the zone when those turn "
+       "by at most this angle (0: off; strict: 4).",
+       T::Real,
+       G::StrictGuard,
+       "deg",
+       0,
+       90,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_ANGLE(fitSeedFlatAngleRad)},
+
+      // ----- extended method, sampling-grid guard
+      {"sampling_grid_guard",
+       "--grid-guard",
+       "samplingGridGuard",
+       "Sampling-grid guard (extended)",
+       "Extended method only. When the input was made by marching cubes (its vertices lie on "
+       "the edges of an axis-aligned grid, which is detected), a new vertex goes back to rest "
+       "when sharpening would sweep the surface over a grid node that the sampler saw on the "
+       "other side (a blend or a bevel hardly larger than a cell); when a tenth of the moves "
+       "between two regions go back so, the rest of them follow. For resamplings of exact "
+       "shapes (Uniform Mesh Resampling); not for reconstructions (Screened Poisson), whose "
+       "grid holds a smoothed surface.",
+       T::Flag,
+       G::GridGuard,
+       "",
+       0,
+       1,
+       false,
+       kInSharpen,
+       {},
+       {},
+       ES_FLAG(samplingGridGuard)},
+      {"grid_sweep_tolerance_cells",
+       "--grid-tolerance",
+       "",
+       "Grid tolerance",
+       "A node counts as swept when it lies this many cells past the moved face.",
+       T::Real,
+       G::GridGuard,
+       "cells",
+       0,
+       10,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(gridSweepToleranceCells)},
+      {"grid_blended_feature_fraction",
+       "--grid-blended-fraction",
+       "",
+       "Grid blended fraction",
+       "When this fraction of the moves between two regions went back, the rest of them go "
+       "back too (a blend, not a sharp edge; 0: off).",
+       T::Real,
+       G::GridGuard,
+       "",
+       0,
+       1,
+       false,
+       kNotInMeshLab,
+       {},
+       {},
+       ES_REAL(gridBlendedFeatureFraction)},
+  };
+  return table;
+}
+
+#undef ES_REAL
+#undef ES_INT
+#undef ES_FLAG
+#undef ES_ANGLE
+
+inline std::string OptionSpec::problemWith(double value) const {
+  const std::string name(key);
+  if (!std::isfinite(value)) return "option " + name + " must be a finite number";
+  if (type == OptionType::Flag && value != 0 && value != 1)
+    return "option " + name + " must be true or false";
+  if ((type == OptionType::Integer || type == OptionType::Choice) && value != std::floor(value))
+    return "option " + name + " must be a whole number";
+  const bool belowMin = minExclusive ? !(value > minValue) : !(value >= minValue);
+  if (belowMin || !(value <= maxValue)) {
+    if (type == OptionType::Choice) return "option " + name + " has no such choice";
+    auto text = [](double x) {
+      std::string s = std::to_string(x);
+      s.erase(s.find_last_not_of('0') + 1);
+      if (!s.empty() && s.back() == '.') s.pop_back();
+      return s;
+    };
+    return "option " + name + " must be in " + (minExclusive ? "(" : "[") + text(minValue) + ", " +
+           text(maxValue) + "]" + (unit.empty() ? "" : " " + std::string(unit));
+  }
+  return {};
+}
+
+/// The option called `key`, or null.
+inline const OptionSpec *findOption(std::string_view key) {
+  for (const OptionSpec &spec : optionTable())
+    if (spec.key == key) return &spec;
+  return nullptr;
+}
+
+/// Why these options cannot run, or empty: every option's value against its
+/// declared range.
+inline std::string findOptionProblem(const SharpenOptions &opt) {
+  for (const OptionSpec &spec : optionTable()) {
+    std::string problem = spec.problemWith(spec.get(opt));
+    if (!problem.empty()) return problem;
+  }
+  return {};
+}
+
+}  // namespace edge_sharpener
