@@ -352,20 +352,6 @@ struct NearLists {
 
 }  // namespace detail
 
-/// Positions of the original vertices before the extended method projects
-/// zone vertices (the rest positions revertSelfIntersections() returns them
-/// to); empty for the paper's method, whose original vertices never move.
-template <class MeshType>
-std::vector<typename MeshType::CoordType> positionsBeforeProjection(const MeshType &m,
-                                                                    const SplitPlan &plan,
-                                                                    const SharpenOptions &opt) {
-  std::vector<typename MeshType::CoordType> rest;
-  if (opt.method != Method::Extended) return rest;
-  rest.reserve(plan.originalVertexCount);
-  for (std::size_t v = 0; v < plan.originalVertexCount; ++v) rest.push_back(m.vert[v].cP());
-  return rest;
-}
-
 /// Stage 6b: moves vertices back towards rest until no face incident to a
 /// moved vertex intersects another face (facesIntersect(): vcglib's test for
 /// faces sharing a vertex, a contact-tolerant Moeller test otherwise). A

@@ -17,6 +17,7 @@
 #include "../sampling_grid.h"
 #include "../smooth_edges.h"
 #include "../subdivision.h"
+#include "../vertex_moves.h"
 
 namespace edge_sharpener {
 
@@ -132,7 +133,8 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   detail::reportProgress(opt, 40, "Edge-Sharpener: subdivision");
   const SplitPlan plan = planSplits(m, labels);
   report.subdivision = subdivide(m, plan, labels);
-  const auto restBeforeProjection = positionsBeforeProjection(m, plan, opt);
+  VertexMoves<MeshType> moves(m, plan, labels, opt.method == Method::Extended);
+  const auto &restBeforeProjection = moves.originalRest();
 
   detail::reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
   report.placement =

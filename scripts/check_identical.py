@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""Checks that a refactoring left the outputs byte-identical.
+
+Runs two builds of the edge-sharpener CLI (BEFORE and AFTER) on the same inputs with every
+method and variant, and compares the output files byte for byte. Where they differ it
+measures both outputs against each other with mesh-distance (max, in % of the diagonal), so a
+rounding change can be told from a behaviour change.
+
+  scripts/check_identical.py BEFORE_CLI AFTER_CLI [--inputs DIR_OR_FILE ...]
+                             [--generated] [--distance MESH_DISTANCE] [--jobs N]
+
+--generated adds the project's exact shapes resampled by its own marching cubes at 2, 1 and
+0.5% (generate-test-meshes from AFTER's build). Inputs the CLI refuses must be refused by
+both builds. Exit status 0 when every output is identical (or refused by both).
+"""
+import argparse
+import concurrent.futures
+import glob
+import hashlib
+import os
+import subprocess
+import sys
+import tempfile
+
+VARIANTS = {
+    "paper": ["--method", "paper"],
+    "paper-colorize": ["--method", "paper", "--colorize"],
+    "paper-m1.5": ["--method", "paper", "--multiplier", "1.5"],
+    "paper-m3": ["--method", "paper", "--multiplier", "3"],
+    "extended": ["--method", "extended"],
+    "extended-colorize": ["--method", "extended", "--colorize"],
+    "extended-m1.5": ["--method", "extended", "--multiplier", "1.5"],
+    "extended-m3": ["--method", "extended", "--multiplier", "3"],
+    "extended-strict": ["--method", "extended", "--strict"],
+    "extended-grid": ["--method", "extended", "--grid-guard"],
+    "extended-strict-grid": ["--method", "extended", "--strict", "--grid-guard"],
+}
+MESH_SUFFIXES = (".ply", ".off", ".obj", ".stl")
+
+
+def digest(path):
+    with open(path, "rb") as f:
+        return hashlib.md5(f.read()).hexdigest()
+
+
+def run(cli, mesh, out, args):
+    p = subprocess.run([cli, mesh, out, "-q", *args], capture_output=True, text=True)
+    if p.returncode != 0:
+        return None, (p.stderr.strip().splitlines() or ["?"])[-1]
+    return digest(out), ""
+
+
+def compare(job):
+    before_cli, after_cli, mesh, variant, workdir, distance = job
+    stem = f"{os.path.basename(mesh)}.{variant}"
+    out_a = os.path.join(workdir, stem + ".before.ply")
+    out_b = os.path.join(workdir, stem + ".after.ply")
+    a, err_a = run(before_cli, mesh, out_a, VARIANTS[variant])
+    b, err_b = run(after_cli, mesh, out_b, VARIANTS[variant])
+    result = {"mesh": mesh, "variant": variant}
+    if a is None or b is None:
+        result["status"] = "refused by both" if a is None and b is None else "refused by one"
+        result["detail"] = err_a or err_b
+    elif a == b:
+        result["status"] = "identical"
+    else:
+        result["status"] = "different"
+        if distance:
+            p = subprocess.run([distance, out_b, out_a], capture_output=True, text=True)
+            result["detail"] = p.stdout.strip().splitlines()[-1] if p.stdout else p.stderr
+    for path in (out_a, out_b):
+        if os.path.exists(path):
+            os.remove(path)
+    return result
+
+
+def collect_inputs(paths):
+    meshes = []
+    for p in paths:
+        if os.path.isdir(p):
+            meshes += sorted(q for q in glob.glob(os.path.join(p, "*"))
+                             if q.lower().endswith(MESH_SUFFIXES))
+        elif os.path.isfile(p):
+            meshes.append(p)
+        else:
+            sys.exit(f"check_identical: no such input: {p}")
+    return meshes
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("before_cli")
+    ap.add_argument("after_cli")
+    ap.add_argument("--inputs", nargs="*", default=[])
+    ap.add_argument("--generated", action="store_true")
+    ap.add_argument("--distance", help="mesh-distance binary (to size differences)")
+    ap.add_argument("--variants", default=",".join(VARIANTS))
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    args = ap.parse_args()
+
+    with tempfile.TemporaryDirectory(prefix="check-identical-") as workdir:
+        meshes = collect_inputs(args.inputs)
+        if args.generated:
+            generator = os.path.join(os.path.dirname(os.path.dirname(args.after_cli)),
+                                     "test_meshes", "generate-test-meshes")
+            gen_dir = os.path.join(workdir, "generated")
+            subprocess.run([generator, gen_dir, "--cells", "0.02,0.01,0.005"], check=True,
+                           capture_output=True)
+            meshes += sorted(glob.glob(os.path.join(gen_dir, "*_mc*.ply")))
+        variants = args.variants.split(",")
+        jobs = [(args.before_cli, args.after_cli, m, v, workdir, args.distance)
+                for m in meshes for v in variants]
+        counts = {}
+        problems = []
+        with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+            for r in pool.map(compare, jobs):
+                counts[r["status"]] = counts.get(r["status"], 0) + 1
+                if r["status"] in ("different", "refused by one"):
+                    problems.append(r)
+                    print(f"{r['status']}: {r['mesh']} [{r['variant']}] {r.get('detail', '')}",
+                          flush=True)
+    summary = ", ".join(f"{n} {s}" for s, n in sorted(counts.items()))
+    print(f"check_identical: {len(meshes)} inputs x {len(variants)} variants = {len(jobs)} runs: "
+          f"{summary}")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
