@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs (idempotently) and unpacks the
 # matching MeshLab 2020.09 source tree (plugin headers + vcglib) into .cache/.
-# Usage: scripts/bootstrap.sh            (run as root on Debian bookworm)
+# Usage: scripts/bootstrap.sh [--core]   (run as root on Debian bookworm)
+#   --core: only what the command-line program needs (compiler, CMake, CLI11,
+#           nlohmann-json, Eigen, the vcglib source); no MeshLab, Qt, test tools.
 # Everything comes from the machine's configured Debian archive; no host name
 # is written here: the deb-src entry is derived from the existing deb entry.
 set -euo pipefail
@@ -11,16 +13,24 @@ cache="${EDGE_SHARPENER_CACHE:-$here/.cache}"
 meshlab_version="2020.09+dfsg1-2"
 src_dir="$cache/meshlab-src"
 
-packages=(
+core_packages=(
   cmake g++ make dpkg-dev pkg-config
-  qtbase5-dev libqt5opengl5-dev libglew-dev libeigen3-dev
-  libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
+  libeigen3-dev libcli11-dev nlohmann-json3-dev
+)
+packages=(
+  "${core_packages[@]}"
+  qtbase5-dev libqt5opengl5-dev libglew-dev
+  libgtest-dev libbenchmark-dev
   meshlab xvfb xauth libgl1-mesa-dri xdotool imagemagick
   python3-matplotlib
   clang libclang-rt-14-dev
 )
 
 log() { printf 'bootstrap: %s\n' "$*" >&2; }
+
+if [[ ${1:-} == --core ]]; then
+  packages=("${core_packages[@]}")
+fi
 
 missing=()
 for p in "${packages[@]}"; do

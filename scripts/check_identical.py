@@ -2,7 +2,7 @@
 """Checks that a refactoring left the outputs byte-identical.
 
 Runs two builds of the edge-sharpener CLI (BEFORE and AFTER) on the same inputs with every
-method and variant, and compares the output files byte for byte. Where they differ it
+method and variant, and compares the output files byte for byte, and their JSON reports. Where they differ it
 measures both outputs against each other with mesh-distance (max, in % of the diagonal), so a
 rounding change can be told from a behaviour change.
 
@@ -17,6 +17,7 @@ import argparse
 import concurrent.futures
 import glob
 import hashlib
+import json
 import os
 import subprocess
 import sys
@@ -43,11 +44,19 @@ def digest(path):
         return hashlib.md5(f.read()).hexdigest()
 
 
+# Report fields that name the run rather than describe its result.
+RUN_FIELDS = ("seconds", "input_file", "output_file", "options")
+
+
 def run(cli, mesh, out, args):
-    p = subprocess.run([cli, mesh, out, "-q", *args], capture_output=True, text=True)
+    """The output's digest and the JSON report without the run's own fields."""
+    p = subprocess.run([cli, mesh, out, "--json", *args], capture_output=True, text=True)
     if p.returncode != 0:
         return None, (p.stderr.strip().splitlines() or ["?"])[-1]
-    return digest(out), ""
+    report = json.loads(p.stdout)
+    for key in RUN_FIELDS:
+        report.pop(key, None)
+    return (digest(out), report), ""
 
 
 def compare(job):
@@ -63,6 +72,9 @@ def compare(job):
         result["detail"] = err_a or err_b
     elif a == b:
         result["status"] = "identical"
+    elif a[0] == b[0]:
+        result["status"] = "report differs"
+        result["detail"] = ", ".join(report_differences(a[1], b[1]))
     else:
         result["status"] = "different"
         if distance:
@@ -72,6 +84,16 @@ def compare(job):
         if os.path.exists(path):
             os.remove(path)
     return result
+
+
+def report_differences(a, b, prefix=""):
+    """The dotted paths of the fields in which two reports differ."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        out = []
+        for key in sorted(set(a) | set(b)):
+            out += report_differences(a.get(key), b.get(key), f"{prefix}{key}.")
+        return out
+    return [] if a == b else [f"{prefix[:-1]}: {a} -> {b}"]
 
 
 def collect_inputs(paths):
@@ -115,7 +137,7 @@ def main():
         with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
             for r in pool.map(compare, jobs):
                 counts[r["status"]] = counts.get(r["status"], 0) + 1
-                if r["status"] in ("different", "refused by one"):
+                if r["status"] in ("different", "report differs", "refused by one"):
                     problems.append(r)
                     print(f"{r['status']}: {r['mesh']} [{r['variant']}] {r.get('detail', '')}",
                           flush=True)

@@ -5,13 +5,14 @@
 // move and faces of smooth regions are never changed.
 #pragma once
 
-#include <vector>
-
 #include <vcg/complex/complex.h>
 #include <vcg/simplex/face/pos.h>
 #include <vcg/simplex/face/topology.h>
 
+#include <vector>
+
 #include "subdivision.h"
+#include "vertex_moves.h"
 
 namespace edge_sharpener {
 
@@ -26,7 +27,9 @@ double faceMinAngle(const FaceType &f) {
   return minTriangleAngle(positionOf(f.cV(0)), positionOf(f.cV(1)), positionOf(f.cV(2)));
 }
 
-inline Vec3 triangleNormal(const Vec3 &a, const Vec3 &b, const Vec3 &c) { return (b - a) ^ (c - a); }
+inline Vec3 triangleNormal(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
+  return (b - a) ^ (c - a);
+}
 
 template <class FaceType>
 int longestEdgeIndex(const FaceType &f) {
@@ -90,7 +93,8 @@ bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan
   vcg::face::VFOrderedStarFF(Pos(cf, cz, gone), star);
   for (const Pos &p : star) {
     const FaceType *g = p.F();
-    if (g->cV(0) == kept || g->cV(1) == kept || g->cV(2) == kept) continue;  // removed with the edge
+    if (g->cV(0) == kept || g->cV(1) == kept || g->cV(2) == kept)
+      continue;  // removed with the edge
     Vec3 q[3], r[3];
     for (int j = 0; j < 3; ++j) {
       q[j] = positionOf(g->cV(j));
@@ -135,19 +139,16 @@ bool flipCap(typename MeshType::FaceType &f, MeshLabels<MeshType> &labels) {
   return true;
 }
 
-/// Moves the moved inserted vertices of `f` back to rest.
-/// \return how many were moved back.
+/// Sends the moved inserted vertices of `f` back to rest.
+/// \return how many were sent back.
 template <class MeshType>
 std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
-                                   const SplitPlan &plan, MeshLabels<MeshType> &labels) {
-  using Scalar = typename MeshType::ScalarType;
+                                   VertexMoves<MeshType> &moves) {
   std::size_t n = 0;
   for (int j = 0; j < 3; ++j) {
-    auto *v = f.V(j);
-    if (labels.placement[v] != Placement::Moved) continue;
-    const std::size_t k = vcg::tri::Index(m, v) - plan.originalVertexCount;
-    v->P() = vcg::Point3<Scalar>::Construct(plan.inserted[k].rest);
-    labels.placement[v] = Placement::DegenerateRevert;
+    const std::size_t v = vcg::tri::Index(m, f.V(j));
+    if (v < moves.firstInserted() || !moves.isMoved(v)) continue;
+    moves.sendBack(v, Placement::DegenerateRevert);
     ++n;
   }
   return n;
@@ -160,8 +161,9 @@ std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
 /// flagged (compact afterwards).
 /// \pre placeInsertedVertices() ran; FF topology up to date.
 template <class MeshType>
-CleanupStats removeDegenerateTriangles(MeshType &m, const SplitPlan &plan,
-                                       MeshLabels<MeshType> &labels, double angleRad) {
+CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves, double angleRad) {
+  const SplitPlan &plan = moves.plan();
+  MeshLabels<MeshType> &labels = moves.labels();
   CleanupStats s;
   const auto degenerate = [&](const typename MeshType::FaceType &f) {
     return !f.IsD() && detail::isSplitChild(labels.face[&f]) && detail::faceMinAngle(f) < angleRad;
@@ -186,7 +188,7 @@ CleanupStats removeDegenerateTriangles(MeshType &m, const SplitPlan &plan,
         s.removedFaces += std::size_t(removed);
       } else if (flipCap(f, labels)) {
         ++s.flips;
-      } else if (std::size_t n = revertInsertedVertices(m, f, plan, labels)) {
+      } else if (std::size_t n = revertInsertedVertices(m, f, moves)) {
         s.reverted += n;
       } else {
         continue;

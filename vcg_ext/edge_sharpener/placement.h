@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "options.h"
@@ -222,30 +223,16 @@ inline bool passesIntermediateRegion(const InsertedVertexSource &src, const Plan
 
 }  // namespace detail
 
-/// Where the planes put one inserted vertex, before the edge-length check.
+/// The paper's placement of one inserted vertex (section 3, Figures 5 and 6)
+/// between its source vertices' support planes: the point of the planes'
+/// line nearest the rest position (a chamfer edge) or the three planes'
+/// common point (a corner), or one of the paper's degenerate cases.
 /// \return the outcome and, for Placement::Moved, the target in `target`.
-inline Placement proposePlacement(const InsertedVertexSource &src, const SupportPlanes &support,
-                                  const SharpenOptions &opt, Vec3 &target) {
-  Plane planes[3];
-  for (int i = 0; i < src.originalCount; ++i) {
-    planes[i] = support.plane(src.original[i]);
-    if (planes[i].normal.SquaredNorm() == 0) return Placement::NoSupportPlane;
-  }
-  const int pairs = detail::flankPairCount(src);
-  if (support.measured && opt.maxSupportSpreadRatio > 0) {
-    // A region that turns as much near the feature as the feature itself is
-    // a blend or a facetted curve, not the flank of a sharp edge.
-    for (int i = 0; i < pairs; ++i) {
-      const int j = (i + 1) % src.originalCount;
-      const double theta = angleBetween(planes[i].normal, planes[j].normal);
-      const double spread =
-          std::max(support.fit(src.original[i]).spreadRad, support.fit(src.original[j]).spreadRad);
-      if (spread > opt.maxSupportSpreadRatio * theta) return Placement::CurvedSupport;
-    }
-  }
+inline Placement paperPlacement(const InsertedVertexSource &src, const Plane *planes,
+                                const SharpenOptions &opt, Vec3 &target) {
   if (opt.convexityCheck) {
     const double flat = std::sin(opt.parallelAngleRad);
-    for (int i = 0; i < pairs; ++i) {
+    for (int i = 0; i < detail::flankPairCount(src); ++i) {
       const int j = (i + 1) % src.originalCount;
       if (classifyChamferEdge(planes[i], planes[j], flat) == EdgeConvexity::Mixed)
         return Placement::MixedConvexity;
@@ -260,30 +247,116 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
     if (!x) return Placement::CoplanarNormals;
     target = *x;
   }
-  if (support.measured && opt.maxBendFraction >= 0 &&
-      (detail::flankBendsAway(src, planes, support, opt, target) ||
-       detail::cornerPairBendsAway(src, planes, support, opt)))
-    return Placement::CurvedSupport;
-  if (!support.nearby.empty() && opt.intermediatePlaneTolerance >= 0 &&
-      detail::passesIntermediateRegion(src, planes, support, opt, target))
-    return Placement::CurvedSupport;
-  if (opt.method == Method::Extended && opt.apexHeightFactor > 0) {
-    for (int i = 0; i < pairs; ++i)
-      if (chamferApexHeightRatio(planes[i], planes[(i + 1) % src.originalCount], target) >
-          opt.apexHeightFactor)
-        return Placement::FarFromChamfer;
-  }
-  if (support.sampleSpacing > 0 && opt.maxDisplacementSpacings > 0 &&
-      (target - src.rest).Norm() > opt.maxDisplacementSpacings * support.sampleSpacing)
-    return Placement::FarFromChamfer;
-  if (!support.offPlane.empty() && opt.maxSourceOffPlaneSpacings > 0) {
-    // A source the plane does not describe: the planes' edge is not where
-    // the samples around it put the surface (a blend, a facetted curve).
-    const double limit = opt.maxSourceOffPlaneSpacings * support.sampleSpacing;
-    for (int i = 0; i < src.originalCount; ++i)
-      if (support.offPlane[src.original[i]] > limit) return Placement::OffPlaneSource;
-  }
   return Placement::Moved;
+}
+
+/// The extended method's vetoes: each is a named test that keeps an inserted
+/// vertex at rest and says why, or lets it move (std::nullopt). A veto whose
+/// measures the support planes do not carry lets it move.
+namespace veto {
+
+using Verdict = std::optional<Placement>;
+
+/// A region that turns as much near the feature as the feature itself is a
+/// blend or a facetted curve, not the flank of a sharp edge.
+inline Verdict regionsTurnLikeABlend(const InsertedVertexSource &src, const Plane *planes,
+                                     const SupportPlanes &support, const SharpenOptions &opt) {
+  if (!support.measured || !(opt.maxSupportSpreadRatio > 0)) return std::nullopt;
+  for (int i = 0; i < detail::flankPairCount(src); ++i) {
+    const int j = (i + 1) % src.originalCount;
+    const double theta = angleBetween(planes[i].normal, planes[j].normal);
+    const double spread =
+        std::max(support.fit(src.original[i]).spreadRad, support.fit(src.original[j]).spreadRad);
+    if (spread > opt.maxSupportSpreadRatio * theta) return Placement::CurvedSupport;
+  }
+  return std::nullopt;
+}
+
+/// A flank bends away from its plane before the target (detail::flankBendsAway),
+/// or, at a corner, before the line of a pair of its planes.
+inline Verdict flankBendsAway(const InsertedVertexSource &src, const Plane *planes,
+                              const SupportPlanes &support, const SharpenOptions &opt,
+                              const Vec3 &target) {
+  if (!support.measured || opt.maxBendFraction < 0) return std::nullopt;
+  if (detail::flankBendsAway(src, planes, support, opt, target) ||
+      detail::cornerPairBendsAway(src, planes, support, opt))
+    return Placement::CurvedSupport;
+  return std::nullopt;
+}
+
+/// The target lies beyond the plane of a region between the flanks
+/// (detail::passesIntermediateRegion): the surface turns through facets.
+inline Verdict passesIntermediateRegion(const InsertedVertexSource &src, const Plane *planes,
+                                        const SupportPlanes &support, const SharpenOptions &opt,
+                                        const Vec3 &target) {
+  if (support.nearby.empty() || opt.intermediatePlaneTolerance < 0) return std::nullopt;
+  if (detail::passesIntermediateRegion(src, planes, support, opt, target))
+    return Placement::CurvedSupport;
+  return std::nullopt;
+}
+
+/// The planes meet higher above the chamfer than their angle allows
+/// (geometry.h: chamferApexHeightRatio).
+inline Verdict apexTooHigh(const InsertedVertexSource &src, const Plane *planes,
+                           const SharpenOptions &opt, const Vec3 &target) {
+  if (!(opt.apexHeightFactor > 0)) return std::nullopt;
+  for (int i = 0; i < detail::flankPairCount(src); ++i)
+    if (chamferApexHeightRatio(planes[i], planes[(i + 1) % src.originalCount], target) >
+        opt.apexHeightFactor)
+      return Placement::FarFromChamfer;
+  return std::nullopt;
+}
+
+/// The target lies more than maxDisplacementSpacings sample spacings away.
+inline Verdict displacementTooLarge(const InsertedVertexSource &src, const SupportPlanes &support,
+                                    const SharpenOptions &opt, const Vec3 &target) {
+  if (!(support.sampleSpacing > 0) || !(opt.maxDisplacementSpacings > 0)) return std::nullopt;
+  if ((target - src.rest).Norm() > opt.maxDisplacementSpacings * support.sampleSpacing)
+    return Placement::FarFromChamfer;
+  return std::nullopt;
+}
+
+/// Strict plane guard: a source the plane does not describe — the planes'
+/// edge is not where the samples around it put the surface (a blend, a
+/// facetted curve).
+inline Verdict sourceOffItsPlane(const InsertedVertexSource &src, const SupportPlanes &support,
+                                 const SharpenOptions &opt) {
+  if (support.offPlane.empty() || !(opt.maxSourceOffPlaneSpacings > 0)) return std::nullopt;
+  const double limit = opt.maxSourceOffPlaneSpacings * support.sampleSpacing;
+  for (int i = 0; i < src.originalCount; ++i)
+    if (support.offPlane[src.original[i]] > limit) return Placement::OffPlaneSource;
+  return std::nullopt;
+}
+
+/// The vetoes that need the paper's target, in the order they are tried.
+inline Verdict anyAtTarget(const InsertedVertexSource &src, const Plane *planes,
+                           const SupportPlanes &support, const SharpenOptions &opt,
+                           const Vec3 &target) {
+  if (Verdict v = flankBendsAway(src, planes, support, opt, target)) return v;
+  if (Verdict v = passesIntermediateRegion(src, planes, support, opt, target)) return v;
+  if (Verdict v = apexTooHigh(src, planes, opt, target)) return v;
+  if (Verdict v = displacementTooLarge(src, support, opt, target)) return v;
+  return sourceOffItsPlane(src, support, opt);
+}
+
+}  // namespace veto
+
+/// Where the planes put one inserted vertex, before the edge-length check:
+/// the paper's placement, and for the extended method its vetoes.
+/// \return the outcome and, for Placement::Moved, the target in `target`.
+inline Placement proposePlacement(const InsertedVertexSource &src, const SupportPlanes &support,
+                                  const SharpenOptions &opt, Vec3 &target) {
+  Plane planes[3];
+  for (int i = 0; i < src.originalCount; ++i) {
+    planes[i] = support.plane(src.original[i]);
+    if (planes[i].normal.SquaredNorm() == 0) return Placement::NoSupportPlane;
+  }
+  const bool extended = opt.method == Method::Extended;
+  if (extended)
+    if (veto::Verdict v = veto::regionsTurnLikeABlend(src, planes, support, opt)) return *v;
+  const Placement paper = paperPlacement(src, planes, opt, target);
+  if (!extended || paper != Placement::Moved) return paper;
+  return veto::anyAtTarget(src, planes, support, opt, target).value_or(Placement::Moved);
 }
 
 /// Edge-length check (paper, Figure 7): an inserted vertex may not create an
@@ -326,16 +399,17 @@ std::size_t enforceEdgeLength(MeshType &m, const SplitPlan &plan, MeshLabels<Mes
 }
 
 /// Stage 5: proposes a position for every inserted vertex, applies the
-/// degenerate-case fallbacks, and writes the positions into the mesh.
-/// Original vertices are never touched.
+/// degenerate-case fallbacks, and writes the positions into the mesh; each
+/// inserted vertex's outcome is its placement label (counted at the end of
+/// sharpening: VertexMoves::countOutcomes). Original vertices are never
+/// touched.
 /// \pre subdivide() ran with `plan`; `longestEdge` is the input's longest
 ///      edge; `support` holds one plane per original vertex.
 template <class MeshType>
-PlacementStats placeInsertedVertices(MeshType &m, const SplitPlan &plan,
-                                     MeshLabels<MeshType> &labels, double longestEdge,
-                                     const SharpenOptions &opt, const SupportPlanes &support) {
+void placeInsertedVertices(MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels,
+                           double longestEdge, const SharpenOptions &opt,
+                           const SupportPlanes &support) {
   using Scalar = typename MeshType::ScalarType;
-  PlacementStats s;
   const std::size_t n0 = plan.originalVertexCount;
   std::vector<Vec3> insertedPos(plan.inserted.size());
   for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
@@ -349,14 +423,8 @@ PlacementStats placeInsertedVertices(MeshType &m, const SplitPlan &plan,
     const double factor = opt.method == Method::Extended ? opt.extendedEdgeLengthFactor : 1.0;
     enforceEdgeLength(m, plan, labels, insertedPos, factor * longestEdge);
   }
-
-  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k)
     m.vert[n0 + k].P() = vcg::Point3<Scalar>::Construct(insertedPos[k]);
-    ++s.byOutcome[int(labels.placement[n0 + k])];
-    s.maxDisplacement =
-        std::max(s.maxDisplacement, (insertedPos[k] - plan.inserted[k].rest).Norm());
-  }
-  return s;
 }
 
 }  // namespace edge_sharpener

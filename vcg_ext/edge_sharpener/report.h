@@ -122,35 +122,36 @@ struct SharpenReport {
   bool geometryChanged = false;  ///< false for detection-only runs
 };
 
-/// Multi-line human-readable summary (the CLI's default output, the MeshLab log).
-inline std::string formatReport(const SharpenReport &r) {
-  std::ostringstream s;
-  constexpr double kDeg = 180.0 / 3.14159265358979323846;
-  s << "input: " << r.inputVertices << " vertices, " << r.inputFaces << " faces, longest edge "
-    << r.longestInputEdge << "\n";
+namespace detail {
+
+constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
+
+inline void formatDetection(std::ostream &s, const SharpenReport &r) {
   s << "smooth edges: " << r.smooth.smoothEdges << " of " << r.smooth.edges
-    << " (mean normal angle " << r.smooth.meanAngleRad * kDeg << " deg, threshold "
-    << r.smooth.thresholdRad * kDeg << " deg; boundary " << r.smooth.boundaryEdges
+    << " (mean normal angle " << r.smooth.meanAngleRad * kDegreesPerRadian << " deg, threshold "
+    << r.smooth.thresholdRad * kDegreesPerRadian << " deg; boundary " << r.smooth.boundaryEdges
     << ", next to degenerate faces " << r.smooth.degenerateEdges << ")\n";
   s << "filters: interior red vertices " << r.filters.interiorRedVertices << ", core red faces "
     << r.filters.coreRedFaces << ", red faces " << r.filters.redFaces << ", red vertices "
     << r.filters.redVertices << ", chamfer edges " << r.filters.chamferEdges << ", chamfer faces "
     << r.filters.chamferFaces << ", corner faces " << r.filters.cornerFaces << "\n";
-  if (r.extendedMethod) {
-    s << "feature zones: " << r.extended.regions << " smooth regions (" << r.extended.corridors
-      << " corridors dissolved), " << r.extended.zoneFaces << " zone faces ("
-      << r.extended.openedContacts << " opened at region contacts, " << r.extended.openedCreases
-      << " at internal creases";
-    if (r.extended.returnedBorderFaces > 0)
-      s << ", " << r.extended.returnedBorderFaces << " turned from their region's plane";
-    s << "), " << r.extended.labelledZoneVertices << " of " << r.extended.zoneVertices
-      << " zone vertices labelled";
-    if (r.geometryChanged)
-      s << ", " << r.extended.projectedVertices << " projected onto their region (max "
-        << r.extended.maxProjection << ", " << r.extended.projectionsRejected << " refused)";
-    s << "\n";
-  }
-  if (!r.geometryChanged) return s.str();
+}
+
+inline void formatFeatureZones(std::ostream &s, const SharpenReport &r) {
+  const ExtendedStats &e = r.extended;
+  s << "feature zones: " << e.regions << " smooth regions (" << e.corridors
+    << " corridors dissolved), " << e.zoneFaces << " zone faces (" << e.openedContacts
+    << " opened at region contacts, " << e.openedCreases << " at internal creases";
+  if (e.returnedBorderFaces > 0)
+    s << ", " << e.returnedBorderFaces << " turned from their region's plane";
+  s << "), " << e.labelledZoneVertices << " of " << e.zoneVertices << " zone vertices labelled";
+  if (r.geometryChanged)
+    s << ", " << e.projectedVertices << " projected onto their region (max " << e.maxProjection
+      << ", " << e.projectionsRejected << " refused)";
+  s << "\n";
+}
+
+inline void formatPlacement(std::ostream &s, const SharpenReport &r) {
   s << "subdivision: " << r.subdivision.facesSplitIn2 << " faces split in 2, "
     << r.subdivision.facesSplitIn3 << " in 3, " << r.subdivision.facesSplitIn6 << " in 6; "
     << r.subdivision.insertedVertices << " vertices and " << r.subdivision.addedFaces
@@ -164,17 +165,22 @@ inline std::string formatReport(const SharpenReport &r) {
     s << "; " << toString(p) << " " << r.placement.byOutcome[i];
   }
   s << "\n";
-  if (r.extendedMethod) {
-    s << "sampling grid: ";
-    if (r.grid.gridFound)
-      s << "axis-aligned, cell " << r.grid.step << "; " << r.grid.sweepingFaces
-        << " moved faces swept over a sampled node, " << r.grid.reverted << " inserted and "
-        << r.grid.zoneReverted << " zone vertices sent back (" << r.grid.rounds << " rounds); "
-        << r.grid.blendedFeatures << " blended features (" << r.grid.featureReverted
-        << " of those inserted vertices sent back with their feature)\n";
-    else
-      s << "none found (guard off)\n";
+}
+
+inline void formatGridGuard(std::ostream &s, const GridGuardStats &g) {
+  s << "sampling grid: ";
+  if (!g.gridFound) {
+    s << "none found (guard off)\n";
+    return;
   }
+  s << "axis-aligned, cell " << g.step << "; " << g.sweepingFaces
+    << " moved faces swept over a sampled node, " << g.reverted << " inserted and "
+    << g.zoneReverted << " zone vertices sent back (" << g.rounds << " rounds); "
+    << g.blendedFeatures << " blended features (" << g.featureReverted
+    << " of those inserted vertices sent back with their feature)\n";
+}
+
+inline void formatGuards(std::ostream &s, const SharpenReport &r) {
   s << "cleanup: " << r.cleanup.degenerateFound << " degenerate faces found, "
     << r.cleanup.collapses << " collapses, " << r.cleanup.flips << " flips, " << r.cleanup.reverted
     << " vertices reverted, " << r.cleanup.remaining << " remaining, " << r.cleanup.inherited
@@ -185,6 +191,21 @@ inline std::string formatReport(const SharpenReport &r) {
   if (r.extendedMethod) s << ", " << r.intersections.zoneReverted << " zone vertices reverted";
   s << " (" << r.intersections.rounds << " rounds), " << r.intersections.remaining
     << " left as they are (they intersect at rest too)\n";
+}
+
+}  // namespace detail
+
+/// Multi-line human-readable summary (the CLI's default output, the MeshLab log).
+inline std::string formatReport(const SharpenReport &r) {
+  std::ostringstream s;
+  s << "input: " << r.inputVertices << " vertices, " << r.inputFaces << " faces, longest edge "
+    << r.longestInputEdge << "\n";
+  detail::formatDetection(s, r);
+  if (r.extendedMethod) detail::formatFeatureZones(s, r);
+  if (!r.geometryChanged) return s.str();
+  detail::formatPlacement(s, r);
+  if (r.extendedMethod) detail::formatGridGuard(s, r.grid);
+  detail::formatGuards(s, r);
   s << "output: " << r.outputVertices << " vertices, " << r.outputFaces << " faces\n";
   return s.str();
 }

@@ -8,13 +8,12 @@
 
 #include "../cleanup.h"
 #include "../colorize.h"
-#include "../feature_zones.h"
+#include "../extended_method.h"
 #include "../filters.h"
 #include "../input_check.h"
 #include "../intersection_guard.h"
 #include "../option_table.h"
 #include "../placement.h"
-#include "../sampling_grid.h"
 #include "../smooth_edges.h"
 #include "../subdivision.h"
 #include "../vertex_moves.h"
@@ -43,48 +42,51 @@ double longestEdgeLength(MeshType &m) {
 }
 
 /// Smooth-edge test, then detection by the chosen method: the paper's six
-/// filters, or the extended method's regions and zone labels.
-/// Fills zones.support with the support plane of every original vertex (and,
-/// for the extended method, the rest of `zones`).
+/// filters, or the extended method's feature zones. Fills zones.support with
+/// the support plane of every original vertex that places an inserted one
+/// (and, for the extended method, the rest of `zones`).
 template <class MeshType>
 void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
             SharpenReport &report, FeatureZones &zones) {
   reportProgress(opt, 5, "Edge-Sharpener: smooth edges");
   computeFaceNormals(m, labels);
   report.smooth = labelSmoothEdges(m, labels, opt.smoothMultiplier);
-  if (opt.method == Method::Paper) {
-    reportProgress(opt, 20, "Edge-Sharpener: six filters");
-    report.filters = runSixFilters(m, labels);
-    zones.support = paperSupportPlanes(m, labels);
+  if (opt.method == Method::Extended) {
+    reportProgress(opt, 20, "Edge-Sharpener: feature zones");
+    detectFeatureZones(m, labels, opt, report, zones);
     return;
   }
-  reportProgress(opt, 20, "Edge-Sharpener: feature zones");
-  report.extendedMethod = true;
-  zones.inputFaces = VertexFaceTable(m);
-  const VertexFaceTable &vf = zones.inputFaces;
-  segmentRegions(m, labels, vf, opt.minRegionDepth, zones, report.extended,
-                 report.smooth.boundaryEdges > 0);
-  if (opt.openRegionContacts) {
-    report.extended.openedContacts = openRegionContacts(m, vf, zones);
-    report.extended.zoneFaces += report.extended.openedContacts;
-  }
-  if (opt.openInternalCreases) {
-    // A coarse sampling of a curved surface has large angles everywhere.
-    const double creaseAngle = std::max(
-        opt.internalCreaseAngleRad, opt.internalCreaseThresholdFactor * report.smooth.thresholdRad);
-    report.extended.openedCreases = openInternalCreases(m, labels, vf, creaseAngle, zones);
-    report.extended.zoneFaces += report.extended.openedCreases;
-  }
-  if (opt.borderTurnThresholdFactor > 0) {
-    report.extended.returnedBorderFaces = returnTurnedBorderFaces(
-        m, labels, vf, opt, opt.borderTurnThresholdFactor * report.smooth.thresholdRad, zones);
-    report.extended.zoneFaces += report.extended.returnedBorderFaces;
-  }
-  labelZoneVertices(m, vf, opt, zones, report.extended);
-  if (opt.samplingGridGuard) zones.samplingGrid = detectSamplingGrid(m);
-  zones.support.sampleSpacing = medianEdgeLength(m);
-  if (opt.maxSourceOffPlaneSpacings > 0) measureOffPlane(m, zones);
-  report.filters = markZoneChamfers(m, labels, zones, opt.sameRegionFeatureAngleRad);
+  reportProgress(opt, 20, "Edge-Sharpener: six filters");
+  report.filters = runSixFilters(m, labels);
+  zones.support = paperSupportPlanes(m, labels);
+}
+
+template <class MeshType>
+void requireColours(MeshType &m, const SharpenOptions &opt) {
+  if (!opt.colorize) return;
+  vcg::tri::RequirePerFaceColor(m);
+  vcg::tri::RequirePerVertexColor(m);
+}
+
+/// The outcome of every inserted vertex, and the zone vertices still
+/// projected, once every guard has run.
+template <class MeshType>
+void countOutcomes(const VertexMoves<MeshType> &moves, SharpenReport &report) {
+  report.placement = moves.countOutcomes();
+  if (report.extendedMethod) report.extended.projectedVertices = moves.movedOriginals();
+}
+
+/// Colours (inspection only), compact vectors, normals, output counts.
+template <class MeshType>
+void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
+            SharpenReport &report) {
+  if (opt.colorize) colorize(m, labels);
+  vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
+  if (vcg::tri::HasPerFaceNormal(m)) vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(m);
+  if (vcg::tri::HasPerVertexNormal(m)) vcg::tri::UpdateNormal<MeshType>::PerVertexNormalized(m);
+  report.outputVertices = m.vert.size();
+  report.outputFaces = m.face.size();
+  reportProgress(opt, 100, "Edge-Sharpener: done");
 }
 
 template <class MeshType>
@@ -119,11 +121,7 @@ SharpenReport detectChamfers(MeshType &m, const SharpenOptions &opt) {
 
 template <class MeshType>
 SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
-  using Alloc = vcg::tri::Allocator<MeshType>;
-  if (opt.colorize) {
-    vcg::tri::RequirePerFaceColor(m);
-    vcg::tri::RequirePerVertexColor(m);
-  }
+  detail::requireColours(m, opt);
   SharpenReport report = detail::validate(m, opt);
   report.geometryChanged = true;
   MeshLabels<MeshType> labels(m);
@@ -134,50 +132,17 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   const SplitPlan plan = planSplits(m, labels);
   report.subdivision = subdivide(m, plan, labels);
   VertexMoves<MeshType> moves(m, plan, labels, opt.method == Method::Extended);
-  const auto &restBeforeProjection = moves.originalRest();
 
   detail::reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
-  report.placement =
-      placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt, zones.support);
-  if (opt.method == Method::Extended) {
-    std::vector<char> nearSharpEdge(plan.originalVertexCount, 0);
-    for (std::size_t k = 0; k < plan.inserted.size(); ++k)
-      if (labels.placement[plan.originalVertexCount + k] == Placement::Moved)
-        for (int i = 0; i < plan.inserted[k].originalCount; ++i)
-          nearSharpEdge[plan.inserted[k].original[i]] = 1;
-    projectZoneVertices(m, zones, plan.originalVertexCount, nearSharpEdge, opt, report.extended);
-    if (opt.samplingGridGuard) {
-      report.grid = revertGridContradictions(m, plan, labels, zones.samplingGrid,
-                                             restBeforeProjection, opt.gridSweepToleranceCells);
-      revertBlendedFeatures(m, plan, labels, zones.support.region, opt.gridBlendedFeatureFraction,
-                            report.grid);
-      report.extended.projectedVertices -= report.grid.zoneReverted;
-    }
-  }
+  placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt, zones.support);
+  if (opt.method == Method::Extended) refineExtendedPlacement(m, moves, zones, opt, report);
 
   detail::reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
-  report.cleanup = removeDegenerateTriangles(m, plan, labels, opt.degenerateAngleRad);
-  report.intersections = revertSelfIntersections(m, plan, labels, restBeforeProjection,
+  report.cleanup = removeDegenerateTriangles(m, moves, opt.degenerateAngleRad);
+  report.intersections = revertSelfIntersections(m, plan, labels, moves.originalRest(),
                                                  opt.degenerateAngleRad, report.longestInputEdge);
-  report.extended.projectedVertices -= report.intersections.zoneReverted;
-  // Outcomes as they stand after cleanup (collapsed vertices are gone).
-  report.placement.byOutcome.fill(0);
-  report.placement.maxDisplacement = 0;
-  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
-    const auto &v = m.vert[plan.originalVertexCount + k];
-    if (v.IsD()) continue;
-    ++report.placement.byOutcome[int(labels.placement[&v])];
-    report.placement.maxDisplacement =
-        std::max(report.placement.maxDisplacement, (positionOf(&v) - plan.inserted[k].rest).Norm());
-  }
-
-  if (opt.colorize) colorize(m, labels);
-  Alloc::CompactEveryVector(m);
-  if (vcg::tri::HasPerFaceNormal(m)) vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(m);
-  if (vcg::tri::HasPerVertexNormal(m)) vcg::tri::UpdateNormal<MeshType>::PerVertexNormalized(m);
-  report.outputVertices = m.vert.size();
-  report.outputFaces = m.face.size();
-  detail::reportProgress(opt, 100, "Edge-Sharpener: done");
+  detail::countOutcomes(moves, report);
+  detail::finish(m, labels, opt, report);
   return report;
 }
 

@@ -1,0 +1,81 @@
+// The extended method's two stages as sharpen() calls them: detection
+// (smooth regions, the feature zone between them, zone labels, chamfer
+// edges) in place of the paper's six filters, and the refinement after the
+// paper's placement (zone projection, the opt-in sampling-grid guard).
+#pragma once
+
+#include "feature_zones.h"
+#include "options.h"
+#include "report.h"
+#include "sampling_grid.h"
+#include "vertex_moves.h"
+
+namespace edge_sharpener {
+
+/// Detection by feature zones: smooth regions segmented; faces returned to
+/// the zone where regions touch, crease or (strict) turn from their plane;
+/// zone vertices labelled with the surface they sample; chamfer edges
+/// marked between differently labelled vertices. Fills `zones` (support
+/// planes included) and report.extended / report.filters.
+/// \pre face normals and smooth-edge labels computed.
+template <class MeshType>
+void detectFeatureZones(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
+                        SharpenReport &report, FeatureZones &zones) {
+  report.extendedMethod = true;
+  ExtendedStats &stats = report.extended;
+  zones.inputFaces = VertexFaceTable(m);
+  const VertexFaceTable &vf = zones.inputFaces;
+  segmentRegions(m, labels, vf, opt.minRegionDepth, zones, stats, report.smooth.boundaryEdges > 0);
+  if (opt.openRegionContacts) {
+    stats.openedContacts = openRegionContacts(m, vf, zones);
+    stats.zoneFaces += stats.openedContacts;
+  }
+  if (opt.openInternalCreases) {
+    // A coarse sampling of a curved surface has large angles everywhere.
+    const double creaseAngle = std::max(
+        opt.internalCreaseAngleRad, opt.internalCreaseThresholdFactor * report.smooth.thresholdRad);
+    stats.openedCreases = openInternalCreases(m, labels, vf, creaseAngle, zones);
+    stats.zoneFaces += stats.openedCreases;
+  }
+  if (opt.borderTurnThresholdFactor > 0) {
+    stats.returnedBorderFaces = returnTurnedBorderFaces(
+        m, labels, vf, opt, opt.borderTurnThresholdFactor * report.smooth.thresholdRad, zones);
+    stats.zoneFaces += stats.returnedBorderFaces;
+  }
+  labelZoneVertices(m, vf, opt, zones, stats);
+  if (opt.samplingGridGuard) zones.samplingGrid = detectSamplingGrid(m);
+  zones.support.sampleSpacing = medianEdgeLength(m);
+  if (opt.maxSourceOffPlaneSpacings > 0) measureOffPlane(m, zones);
+  report.filters = markZoneChamfers(m, labels, zones, opt.sameRegionFeatureAngleRad);
+}
+
+/// Per original vertex: 1 when it is a source of an inserted vertex that
+/// placement moved (it lies next to a sharp edge being restored).
+template <class MeshType>
+std::vector<char> sourcesOfMovedVertices(const VertexMoves<MeshType> &moves) {
+  const SplitPlan &plan = moves.plan();
+  std::vector<char> source(plan.originalVertexCount, 0);
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k)
+    if (moves.isMoved(plan.originalVertexCount + k))
+      for (int i = 0; i < plan.inserted[k].originalCount; ++i)
+        source[plan.inserted[k].original[i]] = 1;
+  return source;
+}
+
+/// After the paper's placement: the zone vertices next to a restored sharp
+/// edge move onto their region's plane, then the opt-in sampling-grid guard
+/// sends back the moves that sweep over a grid node the sampler saw on the
+/// other side.
+template <class MeshType>
+void refineExtendedPlacement(MeshType &m, VertexMoves<MeshType> &moves, const FeatureZones &zones,
+                             const SharpenOptions &opt, SharpenReport &report) {
+  projectZoneVertices(m, zones, moves.firstInserted(), sourcesOfMovedVertices(moves), opt,
+                      report.extended);
+  if (!opt.samplingGridGuard) return;
+  report.grid = revertGridContradictions(m, moves.plan(), moves.labels(), zones.samplingGrid,
+                                         moves.originalRest(), opt.gridSweepToleranceCells);
+  revertBlendedFeatures(m, moves.plan(), moves.labels(), zones.support.region,
+                        opt.gridBlendedFeatureFraction, report.grid);
+}
+
+}  // namespace edge_sharpener
