@@ -1,0 +1,253 @@
+// The extended method's detection (feature_zones.h) on hand-built meshes:
+// segmentRegions() gives one region per flat side of voxel solids (a cube, an
+// L-block) and returns thin sides to the zone as corridors by
+// minRegionDepth; openRegionContacts() opens the faces where regions touch;
+// labelZoneVertices() gives each zone vertex the region whose plane it lies
+// on, among those within maxLabelHops.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <map>
+#include <set>
+
+#include "edge_sharpener/feature_zones.h"
+#include "edge_sharpener/smooth_edges.h"
+#include "hand_built_meshes.h"
+
+namespace es = edge_sharpener;
+using es::Vec3;
+
+namespace {
+
+/// The flat side of a voxel solid a face lies on: its outward axis direction
+/// and the plane's coordinate along it (in refined grid units).
+using Side = std::pair<int, long>;
+
+Side sideOf(const es::Mesh::FaceType &f, int n) {
+  const Vec3 normal = es::hand_built::areaNormal(f);
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(normal[k]) > std::abs(normal[axis])) axis = k;
+  const int direction = 2 * axis + (normal[axis] > 0);
+  return {direction, std::lround(f.cP(0)[axis] * n)};
+}
+
+/// Smooth-edge test and region segmentation, as detection runs them.
+struct Segmented {
+  es::MeshLabels<es::Mesh> labels;
+  es::VertexFaceTable vf;
+  es::FeatureZones zones;
+  es::ExtendedStats stats;
+
+  Segmented(es::Mesh &m, int minRegionDepth) : labels(m), vf(m) {
+    es::computeFaceNormals(m, labels);
+    const es::SmoothEdgeStats smooth = es::labelSmoothEdges(m, labels, 2.0);
+    es::segmentRegions(m, labels, vf, minRegionDepth, zones, stats, smooth.boundaryEdges > 0);
+  }
+};
+
+/// Every face of a side outside `zoneSides` carries one region id, the same
+/// over the side and different from every other side's; the faces of
+/// `zoneSides` are in the zone.
+::testing::AssertionResult oneRegionPerSide(const es::Mesh &m, int n, const es::FeatureZones &zones,
+                                            const std::function<bool(Side)> &inZone) {
+  std::map<Side, int> regionOfSide;
+  std::set<int> ids;
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    const Side side = sideOf(m.face[f], n);
+    const int r = zones.faceRegion[f];
+    if (inZone(side)) {
+      if (r != es::kZone)
+        return ::testing::AssertionFailure() << "face " << f << " not in the zone";
+      continue;
+    }
+    if (r == es::kZone) return ::testing::AssertionFailure() << "face " << f << " in the zone";
+    const auto [it, added] = regionOfSide.emplace(side, r);
+    if (added && !ids.insert(r).second)
+      return ::testing::AssertionFailure() << "region " << r << " spans two sides";
+    if (it->second != r)
+      return ::testing::AssertionFailure() << "a side holds regions " << it->second << ", " << r;
+  }
+  for (const int r : ids)
+    if (r < 0 || r >= int(ids.size()))
+      return ::testing::AssertionFailure() << "region ids are not 0.." << ids.size() - 1;
+  return ::testing::AssertionSuccess();
+}
+
+const auto kNoZone = [](Side) { return false; };
+
+}  // namespace
+
+TEST(SegmentRegions, OneRegionPerSideOfACube) {
+  es::Mesh m;
+  es::hand_built::voxelSurface(m, {{0, 0, 0}}, 3);
+  Segmented s(m, 1);
+  EXPECT_EQ(s.stats.regions, 6u);
+  EXPECT_EQ(s.stats.corridors, 0u);
+  EXPECT_EQ(s.stats.zoneFaces, 0u);
+  EXPECT_TRUE(oneRegionPerSide(m, 3, s.zones, kNoZone));
+}
+
+// An L of three voxels: eight flat sides, one of the edges concave.
+TEST(SegmentRegions, OneRegionPerSideOfAnLBlock) {
+  es::Mesh m;
+  es::hand_built::voxelSurface(m, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, 2);
+  ASSERT_TRUE(es::hand_built::closedOrientedManifold(m));
+  Segmented s(m, 1);
+  EXPECT_EQ(s.stats.regions, 8u);
+  EXPECT_EQ(s.stats.corridors, 0u);
+  EXPECT_TRUE(oneRegionPerSide(m, 2, s.zones, kNoZone));
+}
+
+// A plate of 4 x 4 x 1 voxels cut in 2 x 2: its rims are bands two
+// triangles high (depth 1 from their border), top and bottom reach depth 4.
+// minRegionDepth 2 turns the rims into corridors, which join the zone.
+TEST(SegmentRegions, ThinBandsBecomeCorridorsBelowMinRegionDepth) {
+  std::vector<std::array<int, 3>> cells;
+  for (int x = 0; x < 4; ++x)
+    for (int y = 0; y < 4; ++y) cells.push_back({x, y, 0});
+  const auto isRim = [](Side side) { return side.first / 2 != 2; };  // normal not along z
+  for (const int minDepth : {1, 2}) {
+    SCOPED_TRACE(minDepth);
+    es::Mesh m;
+    es::hand_built::voxelSurface(m, cells, 2);
+    Segmented s(m, minDepth);
+    std::size_t rimFaces = 0;
+    for (const auto &f : m.face) rimFaces += isRim(sideOf(f, 2));
+    if (minDepth == 1) {
+      EXPECT_EQ(s.stats.regions, 6u);
+      EXPECT_EQ(s.stats.corridors, 0u);
+      EXPECT_TRUE(oneRegionPerSide(m, 2, s.zones, kNoZone));
+    } else {
+      EXPECT_EQ(s.stats.regions, 2u);
+      EXPECT_EQ(s.stats.corridors, 4u);
+      EXPECT_EQ(s.stats.zoneFaces, rimFaces);
+      EXPECT_TRUE(oneRegionPerSide(m, 2, s.zones, isRim));
+    }
+  }
+}
+
+// Where two sides of the cube meet, their regions touch without a zone
+// between them: every face with a vertex on a cube edge returns to the zone.
+TEST(OpenRegionContacts, OpensTheFacesAroundWhereRegionsTouch) {
+  es::Mesh m;
+  es::hand_built::voxelSurface(m, {{0, 0, 0}}, 3);
+  Segmented s(m, 1);
+  ASSERT_EQ(s.stats.regions, 6u);
+  const std::vector<int> before = s.zones.faceRegion;
+  const auto onCubeEdge = [](const vcg::Point3f &p) {
+    int onBorder = 0;
+    for (int k = 0; k < 3; ++k) onBorder += p[k] == 0 || p[k] == 1;
+    return onBorder >= 2;
+  };
+  std::size_t touching = 0;
+  std::vector<char> opens(m.face.size(), 0);
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    for (int k = 0; k < 3; ++k) opens[f] |= onCubeEdge(m.face[f].cP(k));
+    touching += opens[f];
+  }
+  ASSERT_GT(touching, 0u);
+  ASSERT_LT(touching, m.face.size());
+
+  EXPECT_EQ(es::openRegionContacts(m, s.vf, s.zones), touching);
+  for (std::size_t f = 0; f < m.face.size(); ++f)
+    EXPECT_EQ(s.zones.faceRegion[f], opens[f] ? es::kZone : before[f]) << "face " << f;
+}
+
+namespace {
+
+// A height field, flat (z = 0) up to the sharp edge at x = 1.13 and falling
+// at 45 degrees after it. Region 0: faces with x <= 0.8, region 1: x >= 1.3;
+// the zone's vertex columns x = 0.9 .. 1.2 lie on the flat plane up to 1.1
+// and on the slope at 1.2.
+constexpr int kNx = 20, kNy = 6;
+constexpr double kH = 0.1, kEdgeX = 1.13;
+
+struct TwoPlanes {
+  es::Mesh m;
+  es::FeatureZones zones;
+
+  TwoPlanes() {
+    es::hand_built::heightField(m, kNx, kNy, kH,
+                                [](double x, double) { return x <= kEdgeX ? 0.0 : kEdgeX - x; });
+    zones.faceRegion.assign(m.face.size(), es::kZone);
+    for (std::size_t f = 0; f < m.face.size(); ++f) {
+      double lo = 1e9, hi = -1e9;
+      for (int k = 0; k < 3; ++k) {
+        lo = std::min(lo, double(m.face[f].cP(k)[0]));
+        hi = std::max(hi, double(m.face[f].cP(k)[0]));
+      }
+      if (hi <= 0.8 + 1e-6) zones.faceRegion[f] = 0;
+      if (lo >= 1.3 - 1e-6) zones.faceRegion[f] = 1;
+    }
+  }
+  static int column(std::size_t v) { return int(v % (kNx + 1)); }
+};
+
+const Vec3 kNormalOf[2] = {Vec3(0, 0, 1), Vec3(1, 0, 1) / std::sqrt(2.0)};
+
+}  // namespace
+
+// Column 1.1 is 2 hops from region 1 and 3 from region 0, yet lies on
+// region 0's plane: it samples the flat side and takes its label.
+TEST(LabelZoneVertices, ZoneVerticesTakeTheRegionWhosePlaneTheyLieOn) {
+  TwoPlanes t;
+  const es::VertexFaceTable vf(t.m);
+  es::SharpenOptions opt;
+  opt.method = es::Method::Extended;
+  ASSERT_EQ(opt.maxLabelHops, 3);
+  es::ExtendedStats stats;
+  es::labelZoneVertices(t.m, vf, opt, t.zones, stats);
+  EXPECT_EQ(stats.zoneVertices, std::size_t(4 * (kNy + 1)));
+  EXPECT_EQ(stats.labelledZoneVertices, stats.zoneVertices);
+  for (std::size_t v = 0; v < t.m.vert.size(); ++v) {
+    const int col = TwoPlanes::column(v);
+    const int expected = col <= 11 ? 0 : 1;  // x = 1.1 still lies on the flat side
+    EXPECT_EQ(t.zones.vertexLabel[v], expected) << "vertex " << v << " column " << col;
+    EXPECT_EQ(bool(t.zones.inRegion[v]), col <= 8 || col >= 13) << "vertex " << v;
+    if (col < 8 || col > 13) continue;  // fitted planes: the region border and the zone
+    const es::Plane &plane = t.zones.support.plane(v);
+    EXPECT_LT(es::angleBetween(plane.normal, kNormalOf[expected]), 1e-6) << "vertex " << v;
+    EXPECT_LT(std::abs(plane.normal * (es::positionOf(&t.m.vert[v]) - plane.point)), 1e-6)
+        << "vertex " << v << " off its plane";
+  }
+}
+
+// With maxLabelHops 1 only the zone columns next to a region are labelled.
+TEST(LabelZoneVertices, VerticesBeyondMaxLabelHopsStayUnlabelled) {
+  TwoPlanes t;
+  const es::VertexFaceTable vf(t.m);
+  es::SharpenOptions opt;
+  opt.method = es::Method::Extended;
+  opt.maxLabelHops = 1;
+  es::ExtendedStats stats;
+  es::labelZoneVertices(t.m, vf, opt, t.zones, stats);
+  EXPECT_EQ(stats.zoneVertices, std::size_t(4 * (kNy + 1)));
+  EXPECT_EQ(stats.labelledZoneVertices, std::size_t(2 * (kNy + 1)));
+  for (std::size_t v = 0; v < t.m.vert.size(); ++v) {
+    const int col = TwoPlanes::column(v);
+    const int expected = col <= 9 ? 0 : col >= 12 ? 1 : es::kZone;
+    EXPECT_EQ(t.zones.vertexLabel[v], expected) << "vertex " << v << " column " << col;
+  }
+}
+
+// Where two regions meet with no zone between them, their shared vertices
+// are creases (already sharp), not labelled with either region.
+TEST(LabelZoneVertices, VerticesSharedByTwoRegionsAreCreases) {
+  TwoPlanes t;
+  for (std::size_t f = 0; f < t.m.face.size(); ++f) {
+    double cx = 0;
+    for (int k = 0; k < 3; ++k) cx += t.m.face[f].cP(k)[0] / 3.0;
+    t.zones.faceRegion[f] = cx < 1.0 ? 0 : 1;
+  }
+  const es::VertexFaceTable vf(t.m);
+  es::SharpenOptions opt;
+  es::ExtendedStats stats;
+  es::labelZoneVertices(t.m, vf, opt, t.zones, stats);
+  EXPECT_EQ(stats.zoneVertices, 0u);
+  for (std::size_t v = 0; v < t.m.vert.size(); ++v) {
+    const int col = TwoPlanes::column(v);
+    EXPECT_EQ(t.zones.vertexLabel[v], col < 10 ? 0 : col > 10 ? 1 : es::kCrease) << "vertex " << v;
+    EXPECT_TRUE(t.zones.inRegion[v]);
+  }
+}

@@ -1,0 +1,276 @@
+// Stages 3 and 4 (planSplits, subdivide) on hand-labelled tetrahedra and a
+// marching-cubes cube: a face with one chamfer edge splits in 2, with two in
+// 3 along the shorter diagonal, a corner into a fan of 6 around its centre;
+// the children tile their parent with its orientation, and the mesh stays
+// closed, 2-manifold and consistently oriented with the adjacency a full
+// rebuild gives.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "edge_sharpener/filters.h"
+#include "edge_sharpener/smooth_edges.h"
+#include "edge_sharpener/subdivision.h"
+#include "hand_built_meshes.h"
+#include "test_meshes/shapes.h"
+
+namespace es = edge_sharpener;
+using es::Vec3;
+using es::hand_built::closedOrientedManifold;
+using es::hand_built::hasEdge;
+
+namespace {
+
+// Tetrahedron a b c d; face 0 = a b c (normal +z), d below. Face 0's edges:
+// 0 = a-b, 1 = b-c, 2 = c-a.
+enum : std::size_t { kA, kB, kC, kD };
+
+void tetrahedron(es::Mesh &m, double cx) {
+  es::hand_built::makeMesh(m, {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(cx, 1, 0), Vec3(0.4, 0.4, -1)},
+                           {{kA, kB, kC}, {kB, kA, kD}, {kC, kB, kD}, {kA, kC, kD}});
+}
+
+/// Marks edges of face 0 as chamfer edges (on both sides), then labels the
+/// faces by their chamfer edges as filter 6 does.
+void markChamferEdges(es::Mesh &m, es::MeshLabels<es::Mesh> &labels,
+                      std::initializer_list<int> edges) {
+  for (const int i : edges) labels.setEdge(&m.face[0], i, es::EdgeLabel::Chamfer);
+  es::paintCornerAndChamferFaces(m, labels);
+}
+
+/// Each face before the split: its area normal. The face's quality holds its
+/// index, which subdivide() copies to the children (they keep the parent's data).
+struct Parents {
+  std::vector<Vec3> areaNormal;
+  std::vector<Vec3> point;
+
+  explicit Parents(es::Mesh &m) {
+    for (std::size_t f = 0; f < m.face.size(); ++f) {
+      m.face[f].Q() = float(f);
+      areaNormal.push_back(es::hand_built::areaNormal(m.face[f]));
+      point.push_back(es::positionOf(m.face[f].cV(0)));
+    }
+  }
+
+  /// Every live face lies in its parent's plane with the parent's
+  /// orientation, and the children's areas add up to the parent's: they tile
+  /// it without folding over.
+  ::testing::AssertionResult tiledWithParentOrientation(const es::Mesh &m) const {
+    std::vector<double> childArea(areaNormal.size(), 0.0);
+    for (const auto &f : m.face) {
+      if (f.IsD()) continue;
+      const std::size_t p = std::size_t(f.cQ());
+      const Vec3 n = areaNormal[p] / areaNormal[p].Norm();
+      const Vec3 child = es::hand_built::areaNormal(f);
+      if (!(child * n > 0))
+        return ::testing::AssertionFailure() << "a child of face " << p << " is flipped";
+      for (int k = 0; k < 3; ++k) {
+        const double offset = std::abs(n * (es::positionOf(f.cV(k)) - point[p]));
+        if (offset > 1e-6)
+          return ::testing::AssertionFailure()
+                 << "a child of face " << p << " leaves its plane by " << offset;
+      }
+      childArea[p] += child.Norm();
+    }
+    for (std::size_t p = 0; p < areaNormal.size(); ++p)
+      if (std::abs(childArea[p] - areaNormal[p].Norm()) > 1e-6 * areaNormal[p].Norm())
+        return ::testing::AssertionFailure() << "children of face " << p << " cover "
+                                             << childArea[p] << " of " << areaNormal[p].Norm();
+    return ::testing::AssertionSuccess();
+  }
+};
+
+/// The inserted vertex (as a mesh index) placed between original vertices u and w.
+std::size_t insertedBetween(const es::SplitPlan &plan, std::size_t u, std::size_t w) {
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+    const auto &s = plan.inserted[k];
+    if (s.originalCount == 2 &&
+        ((s.original[0] == u && s.original[1] == w) || (s.original[0] == w && s.original[1] == u)))
+      return plan.originalVertexCount + k;
+  }
+  ADD_FAILURE() << "no inserted vertex between " << u << " and " << w;
+  return plan.originalVertexCount;
+}
+
+double distance(const es::Mesh &m, std::size_t u, std::size_t w) {
+  return (es::positionOf(&m.vert[u]) - es::positionOf(&m.vert[w])).Norm();
+}
+
+}  // namespace
+
+TEST(Subdivision, OneChamferEdgeSplitsBothItsFacesInTwo) {
+  es::Mesh m;
+  tetrahedron(m, 0.3);
+  es::MeshLabels<es::Mesh> labels(m);
+  markChamferEdges(m, labels, {0});  // a-b: faces a b c and b a d
+  const es::SplitPlan plan = es::planSplits(m, labels);
+  ASSERT_EQ(plan.originalVertexCount, 4u);
+  ASSERT_EQ(plan.inserted.size(), 1u);  // one vertex, shared by both faces of the edge
+  EXPECT_EQ(plan.inserted[0].originalCount, 2);
+  EXPECT_LT((plan.inserted[0].rest - Vec3(0.5, 0, 0)).Norm(), 1e-12);  // the midpoint
+  ASSERT_EQ(plan.faces.size(), 2u);
+  for (const es::SplitFace &sf : plan.faces) {
+    EXPECT_EQ(sf.centerVertex, -1);
+    int withVertex = 0;
+    for (const int v : sf.edgeVertex) withVertex += v == 0;
+    EXPECT_EQ(withVertex, 1);
+  }
+
+  const Parents parents(m);
+  const es::SubdivisionStats s = es::subdivide(m, plan, labels);
+  EXPECT_EQ(s.facesSplitIn2, 2u);
+  EXPECT_EQ(s.facesSplitIn3, 0u);
+  EXPECT_EQ(s.facesSplitIn6, 0u);
+  EXPECT_EQ(s.insertedVertices, 1u);
+  EXPECT_EQ(s.addedFaces, 2u);
+  ASSERT_EQ(m.vert.size(), 5u);
+  ASSERT_EQ(m.face.size(), 6u);
+  const std::size_t e = 4;
+  EXPECT_FALSE(hasEdge(m, kA, kB));  // cut at e...
+  EXPECT_TRUE(hasEdge(m, kA, e));
+  EXPECT_TRUE(hasEdge(m, e, kB));
+  EXPECT_TRUE(hasEdge(m, e, kC));  // ...and joined to both opposite vertices
+  EXPECT_TRUE(hasEdge(m, e, kD));
+  EXPECT_EQ(es::hand_built::valence(m, e), 4u);
+  EXPECT_TRUE(parents.tiledWithParentOrientation(m));
+  EXPECT_TRUE(closedOrientedManifold(m));
+  EXPECT_TRUE(es::hand_built::adjacencyMatchesRebuild(m));
+  // Children keep their parent's label.
+  for (const auto &f : m.face)
+    EXPECT_EQ(labels.face[&f], f.cQ() < 2 ? es::FaceLabel::Chamfer : es::FaceLabel::Gray);
+}
+
+TEST(Subdivision, TwoChamferEdgesSplitInThreeAlongTheShorterDiagonal) {
+  // Free edge a-b, apex c, m1 on b-c, m2 on c-a: with c over x = 0.2 the
+  // diagonal a-m1 is the shorter one, with c over x = 0.8 it is b-m2.
+  for (const double cx : {0.2, 0.8}) {
+    SCOPED_TRACE(cx);
+    es::Mesh m;
+    tetrahedron(m, cx);
+    es::MeshLabels<es::Mesh> labels(m);
+    markChamferEdges(m, labels, {1, 2});
+    ASSERT_EQ(labels.face[&m.face[0]], es::FaceLabel::Chamfer);
+    const es::SplitPlan plan = es::planSplits(m, labels);
+    ASSERT_EQ(plan.inserted.size(), 2u);
+    ASSERT_EQ(plan.faces.size(), 3u);  // a b c in 3, c b d and a c d in 2
+
+    const Parents parents(m);
+    const es::SubdivisionStats s = es::subdivide(m, plan, labels);
+    EXPECT_EQ(s.facesSplitIn3, 1u);
+    EXPECT_EQ(s.facesSplitIn2, 2u);
+    EXPECT_EQ(s.facesSplitIn6, 0u);
+    EXPECT_EQ(s.addedFaces, 4u);
+    ASSERT_EQ(m.face.size(), 8u);
+
+    const std::size_t m1 = insertedBetween(plan, kB, kC), m2 = insertedBetween(plan, kC, kA);
+    EXPECT_TRUE(hasEdge(m, kA, kB));  // the free edge stays
+    EXPECT_TRUE(hasEdge(m, m1, m2));  // the apex triangle m1 c m2
+    const bool viaA = distance(m, kA, m1) < distance(m, kB, m2);
+    EXPECT_EQ(viaA, cx < 0.5);
+    EXPECT_EQ(hasEdge(m, kA, m1), viaA);
+    EXPECT_EQ(hasEdge(m, kB, m2), !viaA);
+    EXPECT_TRUE(parents.tiledWithParentOrientation(m));
+    EXPECT_TRUE(closedOrientedManifold(m));
+    EXPECT_TRUE(es::hand_built::adjacencyMatchesRebuild(m));
+  }
+}
+
+TEST(Subdivision, CornerSplitsIntoAFanOfSixAroundItsCentre) {
+  es::Mesh m;
+  tetrahedron(m, 0.3);
+  es::MeshLabels<es::Mesh> labels(m);
+  markChamferEdges(m, labels, {0, 1, 2});
+  ASSERT_EQ(labels.face[&m.face[0]], es::FaceLabel::Corner);
+  const es::SplitPlan plan = es::planSplits(m, labels);
+  ASSERT_EQ(plan.inserted.size(), 4u);  // three edge vertices and the centre
+  ASSERT_EQ(plan.faces.size(), 4u);
+  const es::SplitFace &corner = plan.faces[0];
+  ASSERT_EQ(corner.face, 0u);
+  ASSERT_GE(corner.centerVertex, 0);
+  const es::InsertedVertexSource &centre = plan.inserted[corner.centerVertex];
+  EXPECT_EQ(centre.originalCount, 3);
+  const Vec3 centroid =
+      (es::positionOf(&m.vert[kA]) + es::positionOf(&m.vert[kB]) + es::positionOf(&m.vert[kC])) / 3;
+  EXPECT_LT((centre.rest - centroid).Norm(), 1e-12);
+
+  const Parents parents(m);
+  const es::SubdivisionStats s = es::subdivide(m, plan, labels);
+  EXPECT_EQ(s.facesSplitIn6, 1u);
+  EXPECT_EQ(s.facesSplitIn2, 3u);
+  EXPECT_EQ(s.facesSplitIn3, 0u);
+  EXPECT_EQ(s.insertedVertices, 4u);
+  EXPECT_EQ(s.addedFaces, 8u);
+  ASSERT_EQ(m.face.size(), 12u);
+  const std::size_t c = plan.originalVertexCount + std::size_t(corner.centerVertex);
+  // The six children of the corner are exactly the faces around the centre.
+  std::size_t aroundCentre = 0, cornerChildren = 0;
+  for (const auto &f : m.face) {
+    bool hasCentre = false;
+    for (int k = 0; k < 3; ++k) hasCentre |= vcg::tri::Index(m, f.cV(k)) == c;
+    aroundCentre += hasCentre;
+    cornerChildren += f.cQ() == 0;
+    EXPECT_TRUE(hasCentre || f.cQ() != 0);
+    EXPECT_EQ(labels.face[&f], f.cQ() == 0 ? es::FaceLabel::Corner : es::FaceLabel::Chamfer);
+  }
+  EXPECT_EQ(aroundCentre, 6u);
+  EXPECT_EQ(cornerChildren, 6u);
+  EXPECT_EQ(es::hand_built::valence(m, c), 6u);
+  for (const auto &[u, w] : {std::pair{kA, kB}, {kB, kC}, {kC, kA}}) {
+    const std::size_t e = insertedBetween(plan, u, w);
+    EXPECT_EQ(es::hand_built::valence(m, e), 4u);  // u, w, the centre, the far vertex d
+    EXPECT_TRUE(hasEdge(m, e, kD));
+  }
+  EXPECT_TRUE(parents.tiledWithParentOrientation(m));
+  EXPECT_TRUE(closedOrientedManifold(m));
+  EXPECT_TRUE(es::hand_built::adjacencyMatchesRebuild(m));
+}
+
+// A chamfer edge on the mesh border (an open scan cut across a chamfer) gets
+// its own vertex; its two halves stay border edges.
+TEST(Subdivision, ChamferEdgeOnTheBorderStaysABorder) {
+  es::Mesh m;
+  es::hand_built::makeMesh(m, {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)},
+                           {{0, 1, 2}, {0, 2, 3}});
+  es::MeshLabels<es::Mesh> labels(m);
+  markChamferEdges(m, labels, {0});
+  const es::SplitPlan plan = es::planSplits(m, labels);
+  const Parents parents(m);
+  const es::SubdivisionStats s = es::subdivide(m, plan, labels);
+  EXPECT_EQ(s.facesSplitIn2, 1u);
+  ASSERT_EQ(m.face.size(), 3u);
+  std::size_t borderEdges = 0;
+  for (auto &f : m.face)
+    for (int i = 0; i < 3; ++i) borderEdges += f.FFp(i) == &f;
+  EXPECT_EQ(borderEdges, 5u);  // the square's four sides, one of them cut in two
+  EXPECT_TRUE(parents.tiledWithParentOrientation(m));
+  EXPECT_TRUE(es::hand_built::adjacencyMatchesRebuild(m));
+}
+
+// The real detection on a marching-cubes cube (chamfer bands along the edges,
+// corner patches): every planned split keeps the mesh closed, 2-manifold and
+// oriented, and the counts add up.
+TEST(Subdivision, SplitOfAChamferedCubeKeepsItClosedAndOriented) {
+  es::Mesh m;
+  es::test_meshes::marchingCubes(es::test_meshes::shapeByName("cube"), 0.1, m);
+  ASSERT_TRUE(closedOrientedManifold(m));
+  const double volume = es::test_meshes::signedVolume(m);
+  es::MeshLabels<es::Mesh> labels(m);
+  es::computeFaceNormals(m, labels);
+  es::labelSmoothEdges(m, labels, 2.0);
+  const es::FilterStats filters = es::runSixFilters(m, labels);
+  ASSERT_GT(filters.chamferEdges, 0u);
+
+  const es::SplitPlan plan = es::planSplits(m, labels);
+  const Parents parents(m);
+  const es::SubdivisionStats s = es::subdivide(m, plan, labels);
+  EXPECT_EQ(s.insertedVertices, filters.chamferEdges + filters.cornerFaces);
+  EXPECT_EQ(s.facesSplitIn2 + s.facesSplitIn3, filters.chamferFaces);
+  EXPECT_EQ(s.facesSplitIn6, filters.cornerFaces);
+  EXPECT_EQ(s.addedFaces, s.facesSplitIn2 + 2 * s.facesSplitIn3 + 5 * s.facesSplitIn6);
+  EXPECT_GT(s.facesSplitIn3, 0u);
+  EXPECT_GT(s.facesSplitIn6, 0u);
+  EXPECT_TRUE(parents.tiledWithParentOrientation(m));
+  EXPECT_TRUE(closedOrientedManifold(m));
+  EXPECT_TRUE(es::hand_built::adjacencyMatchesRebuild(m));
+  EXPECT_NEAR(es::test_meshes::signedVolume(m), volume, 1e-6 * volume);
+}
