@@ -297,11 +297,10 @@ TEST(CapFlip, RefusedWhenTheNewEdgeExistsAlready) {
   EXPECT_TRUE(closedOrientedManifold(m));
 }
 
-// Defect (disabled until cleanup.h is fixed): at a border vertex r,
-// vcg::face::VVOrderedStarFF lists k of its k + 1 neighbours, here not s, so
-// flipCap() does not see that r-s exists and flips into it: r-s then has
-// three faces.
-TEST(CapFlip, DISABLED_RefusedWhenTheNewEdgeExistsAtABorderVertex) {
+// At a border vertex r, vcg::face::VVOrderedStarFF lists k of its k + 1
+// neighbours, here not s: flipCap() must still see that r-s exists (it once
+// flipped into it, leaving r-s with three faces).
+TEST(CapFlip, RefusedWhenTheNewEdgeExistsAtABorderVertex) {
   es::Mesh m;
   capPairWithEdgeRS(m, false);
   es::MeshLabels<es::Mesh> labels(m);
@@ -310,14 +309,13 @@ TEST(CapFlip, DISABLED_RefusedWhenTheNewEdgeExistsAtABorderVertex) {
   EXPECT_EQ(facesOnEdge(m, kR, kS), 1u);
 }
 
-// Defect (disabled until cleanup.h is fixed): an open fan of three faces
-// around a top vertex, x (inserted) 0.01 from y on the border edge y-x.
-// Collapsing it would leave the triangle y z top twice; the link condition
-// must refuse (y and x share two neighbours, a border edge allows one), but
-// vcg::face::FFLinkCondition counts border vertices' neighbours with
-// VVOrderedStarFF, which misses one, so with this orientation the collapse
-// is accepted (with the opposite orientation it is refused).
-TEST(NeedleCollapse, DISABLED_RefusedOnABorderEdgeWhenTheLinkConditionFails) {
+// An open fan of three faces around a top vertex, x (inserted) 0.01 from y
+// on the border edge y-x. Collapsing it would leave the triangle y z top
+// twice; the link condition must refuse (y and x share two neighbours, a
+// border edge allows one). vcg::face::FFLinkCondition counts border
+// vertices' neighbours with VVOrderedStarFF, which misses one, so with this
+// orientation it accepted the collapse (detail::linkConditionHolds does not).
+TEST(NeedleCollapse, RefusedOnABorderEdgeWhenTheLinkConditionFails) {
   enum : int { kY, kZ, kTop, kX };
   es::Mesh m;
   es::hand_built::makeMesh(m,

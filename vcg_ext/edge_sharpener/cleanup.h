@@ -9,6 +9,7 @@
 #include <vcg/simplex/face/pos.h>
 #include <vcg/simplex/face/topology.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "subdivision.h"
@@ -53,6 +54,53 @@ int shortestEdgeIndex(const FaceType &f) {
   return best;
 }
 
+/// The vertices joined by an edge to vertex `z` of face `f`, from the faces
+/// around it. vcglib's VVOrderedStarFF takes one vertex per face, so at a
+/// border vertex (k faces, k + 1 neighbours) it misses one.
+template <class FaceType>
+std::vector<typename FaceType::VertexType *> neighbours(FaceType &f, int z) {
+  using Pos = vcg::face::Pos<FaceType>;
+  auto *v = f.V(z);
+  std::vector<Pos> star;
+  vcg::face::VFOrderedStarFF(Pos(&f, z, v), star);
+  std::vector<typename FaceType::VertexType *> out;
+  for (const Pos &p : star)
+    for (int j = 0; j < 3; ++j) {
+      auto *u = p.F()->V(j);
+      if (u != v && std::find(out.begin(), out.end(), u) == out.end()) out.push_back(u);
+    }
+  return out;
+}
+
+/// The link condition of edge z of face f (Dey et al.; what
+/// vcg::face::FFLinkCondition tests, with every neighbour of a border
+/// vertex): collapsing it keeps the mesh 2-manifold when its ends share no
+/// neighbour but the vertices opposite the edge, and, for an edge between
+/// faces, are not both on a border.
+template <class FaceType>
+bool linkConditionHolds(FaceType &f, int z) {
+  FaceType *g = f.FFp(z);
+  const bool borderEdge = g == &f;
+  const auto around0 = neighbours(f, z), around1 = neighbours(f, (z + 1) % 3);
+  std::size_t shared = 0;
+  for (auto *u : around0) shared += std::find(around1.begin(), around1.end(), u) != around1.end();
+  if (shared != (borderEdge ? 1u : 2u)) return false;
+  if (borderEdge) return true;
+  // A vertex is on a border when a face around it has a border edge at it.
+  const auto onBorder = [](FaceType &face, int i) {
+    auto *v = face.V(i);
+    std::vector<vcg::face::Pos<FaceType>> star;
+    vcg::face::VFOrderedStarFF(vcg::face::Pos<FaceType>(&face, i, v), star);
+    for (const auto &q : star) {
+      FaceType *h = q.F();
+      const int at = h->V(0) == v ? 0 : h->V(1) == v ? 1 : 2;
+      if (h->FFp(at) == h || h->FFp((at + 2) % 3) == h) return true;
+    }
+    return false;
+  };
+  return !(onBorder(f, z) && onBorder(f, (z + 1) % 3));
+}
+
 }  // namespace detail
 
 /// Collapses the shortest edge of a needle (a triangle whose shortest edge is
@@ -85,7 +133,7 @@ bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan
     cz = f.FFi(z);
     if (cf == &f) return false;
   }
-  if (!vcg::face::FFLinkCondition(*cf, cz)) return false;
+  if (!detail::linkConditionHolds(*cf, cz)) return false;
 
   auto *gone = cf->V0(cz);
   auto *kept = cf->V1(cz);
@@ -123,9 +171,7 @@ bool flipCap(typename MeshType::FaceType &f, MeshLabels<MeshType> &labels) {
   const int w = f.FFi(z);
   auto *p = f.V0(z), *q = f.V1(z), *r = f.V2(z), *s = g->V2(w);
   if (r == s || g->V(w) != q || g->V1(w) != p) return false;
-  std::vector<typename FaceType::VertexType *> ring;
-  vcg::face::VVOrderedStarFF(Pos(&f, (z + 2) % 3, r), ring);
-  for (auto *v : ring)
+  for (auto *v : detail::neighbours(f, (z + 2) % 3))
     if (v == s) return false;  // the new edge exists already
 
   const Vec3 P = positionOf(p), Q = positionOf(q), R = positionOf(r), S = positionOf(s);
