@@ -157,8 +157,8 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
 
   detail::reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
   report.cleanup = removeDegenerateTriangles(m, plan, labels, opt.degenerateAngleRad);
-  report.intersections = revertSelfIntersections(m, plan, labels, restBeforeProjection,
-                                                 opt.degenerateAngleRad, report.longestInputEdge);
+  report.intersections =
+      revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
   report.extended.projectedVertices -= report.intersections.zoneReverted;
   // Outcomes as they stand after cleanup (collapsed vertices are gone).
   report.placement.byOutcome.fill(0);
