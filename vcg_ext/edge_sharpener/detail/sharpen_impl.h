@@ -139,8 +139,8 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
 
   detail::reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
   report.cleanup = removeDegenerateTriangles(m, moves, opt.degenerateAngleRad);
-  report.intersections = revertSelfIntersections(m, plan, labels, moves.originalRest(),
-                                                 opt.degenerateAngleRad, report.longestInputEdge);
+  report.intersections =
+      revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
   detail::countOutcomes(moves, report);
   detail::finish(m, labels, opt, report);
   return report;
