@@ -27,8 +27,7 @@ class FilterEdgeSharpenerPlugin : public QObject, public FilterPlugin {
   int getPreConditions(const QAction *) const override;
   int postCondition(const QAction *action) const override;
   RichParameterList initParameterList(const QAction *action, const MeshModel &m) override;
-  std::map<std::string, QVariant> applyFilter(const QAction *action,
-                                              const RichParameterList &par, MeshDocument &md,
-                                              unsigned int &postConditionMask,
+  std::map<std::string, QVariant> applyFilter(const QAction *action, const RichParameterList &par,
+                                              MeshDocument &md, unsigned int &postConditionMask,
                                               vcg::CallBackPos *cb) override;
 };

@@ -15,7 +15,6 @@
 #include <QDir>
 #include <QDomDocument>
 #include <QFileInfo>
-
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -30,8 +29,9 @@ const char *kUsage =
     "           (-s SCRIPT.mlx | -f 'FILTER NAME' [-p name=value]...)\n"
     "  --plugins DIR   the stock plugins (default: MeshLab's plugin folder, found like\n"
     "                  meshlab does, then /usr/lib/x86_64-linux-gnu/meshlab/plugins)\n"
-    "  --add-plugin FILE  one more plugin file to load (e.g. a build of libfilter_edge_sharpener.so)\n"
-    "  --list          print every filter: name, tab, PyMeshLab name\n"
+    "  --add-plugin FILE  one more plugin file to load (e.g. a build of "
+    "libfilter_edge_sharpener.so)\n"
+    "  --list          print every filter: name, PyMeshLab name, class bits (tab-separated)\n"
     "  -s SCRIPT       apply the filters of a MeshLab .mlx script in order; parameters the\n"
     "                  script omits keep their defaults\n"
     "  -f NAME -p k=v  apply one filter; parameters not given keep their defaults\n"
@@ -112,14 +112,22 @@ int ioMaskOf(const QStringList &names, const MeshModel &m) {
   namespace io = vcg::tri::io;
   int mask = 0;
   for (const QString &n : names) {
-    if (n == "vc" && m.hasDataMask(MeshModel::MM_VERTCOLOR)) mask |= io::Mask::IOM_VERTCOLOR;
-    else if (n == "fc" && m.hasDataMask(MeshModel::MM_FACECOLOR)) mask |= io::Mask::IOM_FACECOLOR;
-    else if (n == "vq" && m.hasDataMask(MeshModel::MM_VERTQUALITY)) mask |= io::Mask::IOM_VERTQUALITY;
-    else if (n == "fq" && m.hasDataMask(MeshModel::MM_FACEQUALITY)) mask |= io::Mask::IOM_FACEQUALITY;
-    else if (n == "vf") mask |= io::Mask::IOM_VERTFLAGS;
-    else if (n == "ff") mask |= io::Mask::IOM_FACEFLAGS;
-    else if (n == "vn") mask |= io::Mask::IOM_VERTNORMAL;
-    else if (n == "wt" && m.hasDataMask(MeshModel::MM_WEDGTEXCOORD)) mask |= io::Mask::IOM_WEDGTEXCOORD;
+    if (n == "vc" && m.hasDataMask(MeshModel::MM_VERTCOLOR))
+      mask |= io::Mask::IOM_VERTCOLOR;
+    else if (n == "fc" && m.hasDataMask(MeshModel::MM_FACECOLOR))
+      mask |= io::Mask::IOM_FACECOLOR;
+    else if (n == "vq" && m.hasDataMask(MeshModel::MM_VERTQUALITY))
+      mask |= io::Mask::IOM_VERTQUALITY;
+    else if (n == "fq" && m.hasDataMask(MeshModel::MM_FACEQUALITY))
+      mask |= io::Mask::IOM_FACEQUALITY;
+    else if (n == "vf")
+      mask |= io::Mask::IOM_VERTFLAGS;
+    else if (n == "ff")
+      mask |= io::Mask::IOM_FACEFLAGS;
+    else if (n == "vn")
+      mask |= io::Mask::IOM_VERTNORMAL;
+    else if (n == "wt" && m.hasDataMask(MeshModel::MM_WEDGTEXCOORD))
+      mask |= io::Mask::IOM_WEDGTEXCOORD;
   }
   return mask;
 }
@@ -146,24 +154,39 @@ bool parseArguments(const QStringList &args, Options &o, std::string &error) {
       }
       return args[++i];
     };
-    if (a == "--plugins") o.pluginsDir = next();
-    else if (a == "--add-plugin") o.extraPlugins << next();
-    else if (a == "--list") o.list = true;
-    else if (a == "-i") o.input = next();
-    else if (a == "-o") o.output = next();
-    else if (a == "-s") o.script = next();
-    else if (a == "-f") o.filter = next();
-    else if (a == "-p") o.params << next();
-    else if (a == "-l") o.logFile = next();
-    else if (a == "--mask") o.mask = next().split(',', Qt::SkipEmptyParts);
-    else if (a == "--save-on-error") o.saveOnError = true;
-    else error = "unknown argument '" + a.toStdString() + "'";
+    if (a == "--plugins")
+      o.pluginsDir = next();
+    else if (a == "--add-plugin")
+      o.extraPlugins << next();
+    else if (a == "--list")
+      o.list = true;
+    else if (a == "-i")
+      o.input = next();
+    else if (a == "-o")
+      o.output = next();
+    else if (a == "-s")
+      o.script = next();
+    else if (a == "-f")
+      o.filter = next();
+    else if (a == "-p")
+      o.params << next();
+    else if (a == "-l")
+      o.logFile = next();
+    else if (a == "--mask")
+      o.mask = next().split(',', Qt::SkipEmptyParts);
+    else if (a == "--save-on-error")
+      o.saveOnError = true;
+    else
+      error = "unknown argument '" + a.toStdString() + "'";
     if (!error.empty()) return false;
   }
   if (o.list) return true;
-  if (o.input.isEmpty()) error = "no input mesh (-i)";
-  else if (o.script.isEmpty() == o.filter.isEmpty()) error = "give either -s SCRIPT or -f FILTER";
-  else if (!o.params.isEmpty() && o.filter.isEmpty()) error = "-p goes with -f";
+  if (o.input.isEmpty())
+    error = "no input mesh (-i)";
+  else if (o.script.isEmpty() == o.filter.isEmpty())
+    error = "give either -s SCRIPT or -f FILTER";
+  else if (!o.params.isEmpty() && o.filter.isEmpty())
+    error = "-p goes with -f";
   return error.empty();
 }
 
@@ -199,16 +222,19 @@ int main(int argc, char **argv) {
   if (o.list) {
     for (FilterPlugin *plugin : pm.filterPluginIterator())
       for (QAction *action : plugin->actions())
-        std::printf("%s\t%s\n", qUtf8Printable(plugin->filterName(action)),
-                    qUtf8Printable(plugin->pythonFilterName(action)));
+        std::printf("%s\t%s\t0x%x\n", qUtf8Printable(plugin->filterName(action)),
+                    qUtf8Printable(plugin->pythonFilterName(action)),
+                    unsigned(plugin->getClass(action)));
     return 0;
   }
 
   std::vector<std::pair<QString, RichParameterList>> steps;
   if (!o.script.isEmpty()) {
     FilterScript script;
-    if (!script.open(o.script)) return usageError("cannot read the script " + o.script.toStdString());
-    for (const FilterNameParameterValuesPair &step : script) steps.emplace_back(step.first, step.second);
+    if (!script.open(o.script))
+      return usageError("cannot read the script " + o.script.toStdString());
+    for (const FilterNameParameterValuesPair &step : script)
+      steps.emplace_back(step.first, step.second);
   }
 
   MeshDocument md;
@@ -240,8 +266,8 @@ int main(int argc, char **argv) {
     } catch (const MLException &e) {
       md.Log.log(GLLogStream::WARNING, "Filter '" + name + "' failed: " + QString(e.what()));
       flushLog(md.Log, logged, o.logFile);
-      std::cerr << "meshlab-filter-runner: filter '" << name.toStdString() << "' failed: " << e.what()
-                << "\n";
+      std::cerr << "meshlab-filter-runner: filter '" << name.toStdString()
+                << "' failed: " << e.what() << "\n";
       status = 1;
       break;
     }
@@ -252,8 +278,8 @@ int main(int argc, char **argv) {
       saveMesh(pm, *md.mm(), o.output, o.mask, md.Log);
       flushLog(md.Log, logged, o.logFile);
     } catch (const MLException &e) {
-      std::cerr << "meshlab-filter-runner: cannot save " << o.output.toStdString() << ": " << e.what()
-                << "\n";
+      std::cerr << "meshlab-filter-runner: cannot save " << o.output.toStdString() << ": "
+                << e.what() << "\n";
       return 2;
     }
   }
