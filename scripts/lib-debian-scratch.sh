@@ -31,7 +31,8 @@ Components: main
 Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
 SOURCES
   local opts=(-o "Dir::Etc::sourcelist=/dev/null" -o "Dir::Etc::sourceparts=$dir/sources.list.d"
-    -o "Dir::State::Lists=$dir/lists" -o "Dir::Cache=$dir/cache" -o "Debug::NoLocking=1")
+    -o "Dir::State::Lists=$dir/lists" -o "Dir::Cache=$dir/cache" -o "Debug::NoLocking=1"
+    -o "APT::Sandbox::User=root")  # downloads go to root-owned scratch dirs
   if [[ ! -f $dir/updated || -n $(find "$dir/updated" -mmin +1440) ]]; then
     apt-get "${opts[@]}" update -qq >&2 || return 1
     touch "$dir/updated"

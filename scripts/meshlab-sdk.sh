@@ -19,6 +19,9 @@ case $version in
   *) es_log "unknown MeshLab version '$version' (2022.02 or 2025.07)"; exit 2 ;;
 esac
 sdk="$ES_SYSTEM_CACHE/meshlab-sdk-$version"
+mkdir -p "$ES_SYSTEM_CACHE"
+exec 9>"$ES_SYSTEM_CACHE/meshlab-sdk-$version.lock"  # one maker at a time (parallel clones)
+flock 9
 if [[ -f $sdk/complete ]]; then
   echo "$sdk"
   exit 0
