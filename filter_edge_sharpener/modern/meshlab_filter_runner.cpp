@@ -203,10 +203,19 @@ int main(int argc, char **argv) {
 
   PluginManager &pm = meshlab::pluginManagerInstance();  // the one meshlab::loadMesh uses
   const QString pluginsDir = o.pluginsDir.isEmpty() ? defaultPluginsDir() : o.pluginsDir;
-  try {
-    pm.loadPlugins(QDir(pluginsDir));
-  } catch (const MLException &e) {  // some stock plugin did not load: go on without it
-    std::cerr << "warning: " << e.what() << "\n";
+  // The stock plugins one by one, so that an installed copy of a plugin given with
+  // --add-plugin (same file name) is left out: the given build replaces it.
+  QStringList extraNames;
+  for (const QString &file : o.extraPlugins) extraNames << QFileInfo(file).fileName();
+  const QDir stock(pluginsDir);
+  if (!stock.exists()) return usageError("no plugin folder " + pluginsDir.toStdString());
+  for (const QFileInfo &file : stock.entryInfoList(QStringList() << "*.so", QDir::Files)) {
+    if (extraNames.contains(file.fileName())) continue;
+    try {
+      pm.loadPlugin(file.absoluteFilePath());
+    } catch (const MLException &e) {  // as meshlab: go on without that stock plugin
+      std::cerr << "warning: " << e.what() << "\n";
+    }
   }
   for (const QString &file : o.extraPlugins) {
     try {

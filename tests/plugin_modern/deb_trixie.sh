@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The trixie .deb installs with apt into the trixie root (MeshLab 2022.02) and
 # removes again; installed, MeshLab finds the filter in its own plugin folder: the
-# installed meshlab-filter-runner lists it (no --add-plugin) and runs sharpen.mlx.
+# installed meshlab-filter-runner lists it (no --add-plugin) and runs sharpen.mlx;
+# a build given with --add-plugin then replaces the installed copy.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 debs=("$MODERN_BUILD"/deb/meshlab-plugin-edge-sharpener_*+meshlab2022.02_amd64.deb)
 deb=${debs[0]}
@@ -27,6 +28,11 @@ in_trixie meshlab-filter-runner -i "$ES_SOURCE_DIR/test_meshes/generated/cube_mc
   { cat run.out >&2; fail "the installed plugin did not run sharpen.mlx"; }
 grep -q 'subdivision: ' run.out || fail "no Edge-Sharpener report"
 log "MeshLab 2022.02 finds and runs the installed filter (PyMeshLab names listed too)"
+# A build given with --add-plugin replaces the installed copy: each filter once.
+in_trixie "$RUNNER" --add-plugin "$PLUGIN" --list >list_both.txt 2>list_both.err ||
+  { cat list_both.err >&2; fail "runner --add-plugin with the package installed failed"; }
+count=$(grep -c '^Edge-Sharpener: Sharpen Chamfered Edges	' list_both.txt || true)
+((count == 1)) || fail "with the package installed, --add-plugin lists the filter $count times"
 
 remove
 trap - EXIT
