@@ -6,9 +6,11 @@
 //   plugin_test_tool make-pointcloud OUT.ply   vertices only
 //   plugin_test_tool make-nonmanifold OUT.ply  three triangles on one edge
 //   plugin_test_tool info IN.ply               counts, colours, selection (key=value lines)
-//   plugin_test_tool compare A.ply B.ply [--rel-tol T] [--colors]
+//   plugin_test_tool compare A.ply B.ply [--rel-tol T] [--colors] [--vertex-colors] [--selection]
 //       same vertex and face count, same positions within T x bbox diagonal (default
-//       1e-5), same faces; with --colors also the same per-face colours.
+//       1e-5), same faces; with --colors also the same per-face colours, with
+//       --vertex-colors the same per-vertex colours, with --selection the same
+//       selected faces (both files need the data asked for).
 #include <edge_sharpener/mesh_types.h>
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/color.h>
@@ -168,7 +170,12 @@ FaceKey key(const Mesh &m, const Mesh::FaceType &f, const std::vector<int> &vmap
   return k;
 }
 
-int compare(const std::string &pa, const std::string &pb, double relTol, bool colours) {
+struct CompareWhat {
+  bool vertexColours = false, selection = false;
+};
+
+int compare(const std::string &pa, const std::string &pb, double relTol, bool colours,
+            CompareWhat what = {}) {
   Loaded a, b;
   if (!load(pa, a) || !load(pb, b)) return 2;
   std::cout << "A " << pa << ": " << a.m.vn << " vertices, " << a.m.fn << " faces\n"
@@ -194,20 +201,41 @@ int compare(const std::string &pa, const std::string &pb, double relTol, bool co
     for (std::size_t i = 0; i < vmap.size(); ++i)
       maxDist = std::max(maxDist, double(vcg::Distance(a.m.vert[i].P(), b.m.vert[vmap[i]].P())));
   }
-  std::map<FaceKey, vcg::Color4b> facesB;
-  for (const auto &f : b.m.face) facesB[key(b.m, f, {})] = f.cC();
-  std::size_t missing = 0, colourDiff = 0;
+  std::map<FaceKey, const Mesh::FaceType *> facesB;
+  for (const auto &f : b.m.face) facesB[key(b.m, f, {})] = &f;
+  std::size_t missing = 0, colourDiff = 0, selectionDiff = 0, vertexColourDiff = 0;
   for (const auto &f : a.m.face) {
     auto it = facesB.find(key(a.m, f, vmap));
-    if (it == facesB.end())
+    if (it == facesB.end()) {
       ++missing;
-    else if (colours && it->second != f.cC())
-      ++colourDiff;
+      continue;
+    }
+    if (colours && it->second->cC() != f.cC()) ++colourDiff;
+    if (what.selection && it->second->IsS() != f.IsS()) ++selectionDiff;
   }
+  if (what.vertexColours)
+    for (std::size_t i = 0; i < a.m.vert.size(); ++i)
+      if (a.m.vert[i].cC() != b.m.vert[vmap.empty() ? i : std::size_t(vmap[i])].cC())
+        ++vertexColourDiff;
   std::cout << "max vertex distance " << maxDist << " (tolerance " << tol
             << "), faces of A not in B " << missing;
   if (colours) std::cout << ", faces with different colour " << colourDiff;
+  if (what.vertexColours) std::cout << ", vertices with different colour " << vertexColourDiff;
+  if (what.selection) std::cout << ", faces selected in one only " << selectionDiff;
   std::cout << "\n";
+  const int both = a.mask & b.mask;
+  if (what.vertexColours && !(both & vcg::tri::io::Mask::IOM_VERTCOLOR)) {
+    std::cout << "FAIL: --vertex-colors but a file has no vertex colour\n";
+    return 1;
+  }
+  if (what.selection && !(both & vcg::tri::io::Mask::IOM_FACEFLAGS)) {
+    std::cout << "FAIL: --selection but a file has no face flags\n";
+    return 1;
+  }
+  if (selectionDiff || vertexColourDiff) {
+    std::cout << "FAIL\n";
+    return 1;
+  }
   if (colours && !((a.mask & b.mask) & vcg::tri::io::Mask::IOM_FACECOLOR)) {
     std::cout << "FAIL: --colors but a file has no face colour\n";
     return 1;
@@ -223,7 +251,8 @@ int compare(const std::string &pa, const std::string &pb, double relTol, bool co
 int usage() {
   std::cerr << "usage: plugin_test_tool make-lblock|make-pointcloud|make-nonmanifold OUT\n"
                "       plugin_test_tool info IN\n"
-               "       plugin_test_tool compare A B [--rel-tol T] [--colors]\n";
+               "       plugin_test_tool compare A B [--rel-tol T] [--colors] [--vertex-colors] "
+               "[--selection]\n";
   return 2;
 }
 
@@ -238,15 +267,20 @@ int main(int argc, char **argv) {
   if (args.size() >= 3 && args[0] == "compare") {
     double tol = 1e-5;
     bool colours = false;
+    CompareWhat what;
     for (std::size_t i = 3; i < args.size(); ++i) {
       if (args[i] == "--rel-tol" && i + 1 < args.size())
         tol = std::atof(args[++i].c_str());
       else if (args[i] == "--colors")
         colours = true;
+      else if (args[i] == "--vertex-colors")
+        what.vertexColours = true;
+      else if (args[i] == "--selection")
+        what.selection = true;
       else
         return usage();
     }
-    return compare(args[1], args[2], tol, colours);
+    return compare(args[1], args[2], tol, colours, what);
   }
   return usage();
 }

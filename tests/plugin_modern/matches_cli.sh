@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# MeshLab 2022.02 (trixie root, meshlab-filter-runner) gives the CLI's results:
+# Sharpen (sharpen.mlx: plain, with colours, extended method + strict plane guard)
+# and Detect (detect.mlx, paints and selects) on the generated marching-cubes
+# meshes and on an L-block resampled by stock 2022.02 Uniform Mesh Resampling.
+# Compared: vertices, faces, face and vertex colours, selected faces.
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+[[ -x ${ES_CLI:-} ]] || fail "the edge-sharpener CLI is not built (ES_CLI='${ES_CLI:-}')"
+
+sed 's/name="colorize" type="RichBool" value="false"/name="colorize" type="RichBool" value="true"/' \
+  "$SCRIPTS/sharpen.mlx" >sharpen_colorize.mlx
+grep -q 'name="colorize" type="RichBool" value="true"' sharpen_colorize.mlx || fail "cannot derive sharpen_colorize.mlx"
+sed -e 's/name="method" type="RichEnum" value="0"/name="method" type="RichEnum" value="1"/' \
+  -e 's/name="strictPlaneGuard" type="RichBool" value="false"/name="strictPlaneGuard" type="RichBool" value="true"/' \
+  "$SCRIPTS/sharpen.mlx" >sharpen_strict.mlx
+[[ $(grep -c 'value="1"\|value="true"' sharpen_strict.mlx) -ge 3 ]] || fail "cannot derive sharpen_strict.mlx"
+
+# same NAME CLI-ARGS -- COMPARE-ARGS: the runner's NAME.plugin.ply vs the CLI's NAME.cli.ply.
+same() {
+  local name=$1 in=$2
+  shift 2
+  local cli_args=() cmp_args=()
+  while [[ $1 != -- ]]; do cli_args+=("$1"); shift; done
+  shift
+  cmp_args=("$@")
+  "$ES_CLI" "$in" "$name.cli.ply" "${cli_args[@]}" >"$name.cli.txt" 2>&1 ||
+    { cat "$name.cli.txt" >&2; fail "$name: CLI failed"; }
+  "$ES_TEST_TOOL" compare "$name.plugin.ply" "$name.cli.ply" "${cmp_args[@]}" >"$name.compare.txt" ||
+    { cat "$name.compare.txt"; fail "$name: MeshLab 2022.02 and the CLI differ"; }
+}
+
+mapfile -t inputs < <(chamfered_inputs)
+((${#inputs[@]} >= 2)) || fail "no chamfered input meshes"
+for in in "${inputs[@]}"; do
+  n=$(basename "$in" .ply)
+  in_faces=$("$ES_TEST_TOOL" info "$in" | sed -n 's/^faces=//p')
+
+  run_filter "$n.sharpen" -i "$in" -o "$ES_WORK_DIR/$n.sharpen.plugin.ply" --mask vc,fc,ff \
+    -s "$SCRIPTS/sharpen.mlx" -l "$ES_WORK_DIR/$n.sharpen.log"
+  ((rc == 0)) || { cat "$n.sharpen.out" >&2; fail "$n: runner status $rc"; }
+  grep -q '^  subdivision: ' "$n.sharpen.log" || fail "$n: no Edge-Sharpener report in the log"
+  same "$n.sharpen" "$in" -- --rel-tol 1e-5
+  out_faces=$("$ES_TEST_TOOL" info "$n.sharpen.plugin.ply" | sed -n 's/^faces=//p')
+  ((out_faces > in_faces)) || fail "$n: nothing was sharpened ($in_faces -> $out_faces faces)"
+
+  run_filter "$n.color" -i "$in" -o "$ES_WORK_DIR/$n.color.plugin.ply" --mask vc,fc,ff -s sharpen_colorize.mlx
+  ((rc == 0)) || { cat "$n.color.out" >&2; fail "$n: runner (colorize) status $rc"; }
+  colours=$("$ES_TEST_TOOL" info "$n.color.plugin.ply" | sed -n 's/^face_colors=//p')
+  ((colours >= 3)) || fail "$n: only $colours face colour(s): labels not painted"
+  same "$n.color" "$in" --colorize -- --rel-tol 1e-5 --colors --vertex-colors
+
+  run_filter "$n.strict" -i "$in" -o "$ES_WORK_DIR/$n.strict.plugin.ply" --mask vc,fc,ff -s sharpen_strict.mlx
+  ((rc == 0)) || { cat "$n.strict.out" >&2; fail "$n: runner (strict) status $rc"; }
+  same "$n.strict" "$in" --method extended --strict -- --rel-tol 1e-5
+
+  run_filter "$n.detect" -i "$in" -o "$ES_WORK_DIR/$n.detect.plugin.ply" --mask vc,fc,ff \
+    -s "$SCRIPTS/detect.mlx" -l "$ES_WORK_DIR/$n.detect.log"
+  ((rc == 0)) || { cat "$n.detect.out" >&2; fail "$n: runner (detect) status $rc"; }
+  "$ES_TEST_TOOL" compare "$in" "$n.detect.plugin.ply" --rel-tol 0 >/dev/null ||
+    fail "$n: detection changed the geometry"
+  selected=$("$ES_TEST_TOOL" info "$n.detect.plugin.ply" | sed -n 's/^selected_faces=//p')
+  ((selected > 0)) || fail "$n: no chamfer/corner face selected"
+  same "$n.detect" "$in" --detect-only --colorize -- --rel-tol 0 --colors --vertex-colors --selection
+  log "$n: MeshLab 2022.02 == CLI (sharpen $in_faces -> $out_faces faces, $colours face colours," \
+    "strict guard, detect $selected faces selected)"
+done
