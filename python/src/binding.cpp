@@ -258,6 +258,7 @@ py::tuple optionRecords() {
     py::dict r;
     r["key"] = std::string(spec.key);
     r["label"] = std::string(spec.label);
+    r["cli_flag"] = std::string(spec.cliFlag);
     r["help"] = std::string(spec.help);
     r["type"] = typeName(spec.type);
     r["group"] = es::toString(spec.group);
