@@ -55,6 +55,17 @@ void requireRows3(const py::array &a, const char *name) {
                          shapeText(a));
 }
 
+/// `value` as a numpy array (lists and other array-likes too), without copying an array.
+py::array asArray(const py::handle &value, const char *name) {
+  try {
+    return py::module_::import("numpy").attr("asarray")(value);
+  } catch (py::error_already_set &error) {
+    if (!error.matches(PyExc_ValueError) && !error.matches(PyExc_TypeError)) throw;
+    throw es::InputError(std::string(name) + " must be an array of shape (n, 3): " +
+                         py::str(error.value()).cast<std::string>());
+  }
+}
+
 bool isFloat32(const py::array &vertices) {
   return vertices.dtype().kind() == 'f' && vertices.itemsize() == 4;
 }
@@ -378,9 +389,10 @@ py::tuple sharpenAs(const py::array &vertices, const py::array &faces, const py:
   return py::make_tuple(out[0], out[1], reportDict);
 }
 
-py::tuple sharpen(const py::array &vertices, const py::array &faces, const py::object &progress,
-                  const py::kwargs &options) {
+py::tuple sharpen(const py::object &vertexData, const py::object &faceData,
+                  const py::object &progress, const py::kwargs &options) {
   const es::SharpenOptions opt = optionsFrom(options, "sharpen");
+  const py::array vertices = asArray(vertexData, "vertices"), faces = asArray(faceData, "faces");
   requireRows3(vertices, "vertices");
   return isFloat32(vertices) ? sharpenAs<es::Mesh, float>(vertices, faces, progress, opt)
                              : sharpenAs<es::MeshD, double>(vertices, faces, progress, opt);
@@ -407,9 +419,10 @@ py::array detectAs(const py::array &vertices, const py::array &faces, const py::
   return labels;
 }
 
-py::array detect(const py::array &vertices, const py::array &faces, const py::object &progress,
-                 const py::kwargs &options) {
+py::array detect(const py::object &vertexData, const py::object &faceData,
+                 const py::object &progress, const py::kwargs &options) {
   const es::SharpenOptions opt = optionsFrom(options, "detect");
+  const py::array vertices = asArray(vertexData, "vertices"), faces = asArray(faceData, "faces");
   requireRows3(vertices, "vertices");
   return isFloat32(vertices) ? detectAs<es::Mesh, float>(vertices, faces, progress, opt)
                              : detectAs<es::MeshD, double>(vertices, faces, progress, opt);
@@ -476,12 +489,14 @@ py::dict distanceAs(const py::array &av, const py::array &af, const py::array &b
   return out;
 }
 
-py::dict meshDistance(const py::array &av, const py::array &af, const py::array &bv,
-                      const py::array &bf, long long samples, long long seed, bool sampleVertices,
-                      bool sampleEdges) {
+py::dict meshDistance(const py::object &aVertices, const py::object &aFaces,
+                      const py::object &bVertices, const py::object &bFaces, long long samples,
+                      long long seed, bool sampleVertices, bool sampleEdges) {
   if (samples < 1 || samples > 1000000000)
     throw es::InputError("samples must be in [1, 1000000000]");
   if (seed < 0 || seed > UINT_MAX) throw es::InputError("seed must be in [0, 2^32 - 1]");
+  const py::array av = asArray(aVertices, "a_vertices"), af = asArray(aFaces, "a_faces");
+  const py::array bv = asArray(bVertices, "b_vertices"), bf = asArray(bFaces, "b_faces");
   es::DistanceOptions options;
   options.faceSamples = std::size_t(samples);
   options.seed = unsigned(seed);

@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 import edge_sharpener as es
-from conftest import DISTANCE_CLI, SAMPLES, read_ply, run_cli, sample
+from conftest import DISTANCE_CLI, SAMPLES, run_cli, sample
+from ply import read_ply
 
 MESHES = ["cube_mc2", "lblock_mc2", "pyramid_mc2"]
 OPTION_SETS = [
