@@ -35,6 +35,7 @@ else:
     link = addons / "edge_sharpener_addon"
     if not link.exists():
         link.symlink_to(addon_path.resolve(), target_is_directory=True)
+    bpy.utils.refresh_script_paths()  # the addons folder may be new: put it on sys.path
 bpy.ops.preferences.addon_enable(module="edge_sharpener_addon")
 import edge_sharpener_addon as addon  # noqa: E402
 
