@@ -30,7 +30,8 @@ extension = Pybind11Extension(
     include_dirs=[str(root / "vcg_ext"), str(root / "apps"), vcglib_dir(), "/usr/include/eigen3"],
     cxx_std=17,
     # The core's per-face loops run in parallel with OpenMP (serially without it).
-    extra_compile_args=["-fopenmp", "-Wno-deprecated-declarations"],
+    # -g0: no debug information (Debian's Python builds with -g: a larger, slower build).
+    extra_compile_args=["-fopenmp", "-Wno-deprecated-declarations", "-g0"],
     extra_link_args=["-fopenmp"],
 )
 

@@ -314,6 +314,8 @@ bool callPythonProgress(const int percent, const char *stage) {
 template <class Work>
 void runWithoutGil(const py::object &callback, es::SharpenOptions &opt, Work &&work) {
   PythonProgress progress{callback, nullptr};
+  // Restored on the way out: a callback may itself call sharpen().
+  PythonProgress *const outer = activeProgress;
   if (!callback.is_none()) {
     if (!PyCallable_Check(callback.ptr())) throw py::type_error("progress must be callable");
     opt.progress = callPythonProgress;
@@ -323,10 +325,10 @@ void runWithoutGil(const py::object &callback, es::SharpenOptions &opt, Work &&w
     py::gil_scoped_release release;
     work();
   } catch (...) {
-    activeProgress = nullptr;
+    activeProgress = outer;
     throw;
   }
-  activeProgress = nullptr;
+  activeProgress = outer;
   if (progress.error) std::rethrow_exception(progress.error);
 }
 

@@ -122,6 +122,14 @@ def test_progress_callback(cube):
     assert stages[-1][0] == 100 and len(stages) >= 5
     with pytest.raises(ZeroDivisionError):
         es.sharpen(*cube, progress=lambda percent, stage: 1 / 0)
+    # A callback may run the package itself; the outer call keeps its own callback.
+    outer = []
+    def nested(percent, stage):
+        outer.append(percent)
+        if percent == 40:
+            es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F, progress=lambda p, s: None)
+    es.sharpen(*cube, progress=nested)
+    assert outer == [p for p, _ in stages]
     with pytest.raises(TypeError, match="callable"):
         es.sharpen(*cube, progress=5)
 
