@@ -1,7 +1,9 @@
 """The package's API on numpy arrays: round trips, dtypes, options from the
 table, progress, threads, and every kind of bad input refused with the core's
 message, never a crash, the caller's arrays never modified."""
+import sys
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -152,6 +154,29 @@ def test_threads_run_concurrently_with_identical_results(cube):
     for i, (vertices, faces, _) in enumerate(results):
         assert np.array_equal(vertices, expected[0]) and np.array_equal(faces, expected[1])
         assert stages[i][-1] == 100
+
+
+def test_the_gil_is_released_while_the_core_runs():
+    # With a switch interval far beyond the run, Python threads change hands
+    # only where one releases the GIL. The main thread releases it on every
+    # loop (sleep(0), so that the worker's progress callbacks can run); it sees
+    # the worker between two stages only if the core runs without the GIL.
+    mesh = sample("lblock_mc2")
+    stages, seen = [], set()
+    worker = threading.Thread(target=lambda: es.sharpen(
+        mesh["vertices"], mesh["faces"], method="extended", progress=lambda p, s: stages.append(p)))
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1000)
+    try:
+        worker.start()
+        while worker.is_alive():
+            seen.add(len(stages))
+            time.sleep(0)
+        worker.join()
+    finally:
+        sys.setswitchinterval(interval)
+    assert len(stages) == 6
+    assert seen & {1, 2, 3, 4, 5}, seen
 
 
 def non_manifold_edge():
