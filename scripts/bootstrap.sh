@@ -23,6 +23,8 @@ packages=(
   libgtest-dev libbenchmark-dev
   meshlab xvfb xauth libgl1-mesa-dri xdotool imagemagick
   python3-matplotlib
+  pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest python3-venv
+  python3-setuptools blender
   clang libclang-rt-14-dev
 )
 

@@ -1,0 +1,148 @@
+"""Blender add-on: Mesh > Clean Up > Sharpen Chamfered Edges.
+
+Restores the sharp edges and corners that the voxel remesher (or marching
+cubes, or a uniform resampling) cut into chamfers, with the edge_sharpener
+Python package. The operator's redo panel shows the package's ordinary
+options, built from its option table (edge_sharpener.ordinary_options()).
+"""
+
+bl_info = {
+    "name": "Edge-Sharpener",
+    "author": "Edge-Sharpener contributors",
+    "version": (0, 1, 0),
+    "blender": (3, 4, 0),
+    "location": "View3D > Mesh > Clean Up (Edit Mode), Object > Clean Up (Object Mode)",
+    "description": "Restores sharp edges and corners cut into chamfers by voxel remeshing",
+    "category": "Mesh",
+}
+
+import bpy
+import numpy as np
+
+# The zip built by CMake bundles the package inside the add-on; otherwise the
+# package installed for Blender's Python (pip, cmake --install, PYTHONPATH).
+try:
+    from . import edge_sharpener as es
+except ImportError:
+    try:
+        import edge_sharpener as es
+    except ImportError as error:
+        es = None
+        _import_error = str(error)
+
+
+def _property(option):
+    """A Blender property for one row of the option table."""
+    common = {"name": option["label"], "description": option["help"]}
+    kind = option["type"]
+    if kind == "choice":
+        items = [(c, c.capitalize(), "") for c in option["choices"]]
+        return bpy.props.EnumProperty(items=items, default=option["default"], **common)
+    if kind == "flag":
+        return bpy.props.BoolProperty(default=option["default"], **common)
+    low = option["min"]
+    if option["min_exclusive"]:
+        low += 1e-3  # the range excludes its minimum
+    if kind == "integer":
+        return bpy.props.IntProperty(default=option["default"], min=int(low), max=int(option["max"]), **common)
+    return bpy.props.FloatProperty(default=option["default"], min=low, max=option["max"], **common)
+
+
+def _ordinary_options():
+    return es.ordinary_options() if es is not None else ()
+
+
+def mesh_arrays(mesh):
+    """The mesh's vertices (float32) and triangles (its polygons triangulated)."""
+    mesh.calc_loop_triangles()
+    vertices = np.empty(3 * len(mesh.vertices), dtype=np.float32)
+    mesh.vertices.foreach_get("co", vertices)
+    triangles = np.empty(3 * len(mesh.loop_triangles), dtype=np.int32)
+    mesh.loop_triangles.foreach_get("vertices", triangles)
+    return vertices.reshape(-1, 3), triangles.reshape(-1, 3)
+
+
+def replace_geometry(mesh, vertices, faces, face_colors=None):
+    """Replaces the mesh's geometry with this triangle mesh (UV maps and other
+    attributes do not survive: the triangles are new). Keeps smooth or flat
+    shading as the majority of the old faces had it."""
+    smooth = np.zeros(len(mesh.polygons), dtype=bool)
+    mesh.polygons.foreach_get("use_smooth", smooth)
+    use_smooth = bool(smooth.mean() > 0.5) if len(smooth) else False
+    mesh.clear_geometry()
+    mesh.vertices.add(len(vertices))
+    mesh.vertices.foreach_set("co", np.ascontiguousarray(vertices, dtype=np.float32).ravel())
+    mesh.loops.add(3 * len(faces))
+    mesh.loops.foreach_set("vertex_index", np.ascontiguousarray(faces, dtype=np.int32).ravel())
+    mesh.polygons.add(len(faces))
+    mesh.polygons.foreach_set("loop_start", np.arange(0, 3 * len(faces), 3, dtype=np.int32))
+    mesh.polygons.foreach_set("loop_total", np.full(len(faces), 3, dtype=np.int32))
+    mesh.polygons.foreach_set("use_smooth", np.full(len(faces), use_smooth))
+    mesh.update(calc_edges=True)
+    if face_colors is not None:
+        # Face colours on the face corners (Blender's colour attributes hold
+        # points or corners).
+        layer = mesh.color_attributes.new("Edge-Sharpener labels", "BYTE_COLOR", "CORNER")
+        corner_colors = np.repeat(face_colors.astype(np.float32) / 255.0, 3, axis=0)
+        layer.data.foreach_set("color", corner_colors.ravel())
+
+
+class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
+    """Restore the sharp edges and corners that voxel remeshing cut into chamfers"""
+
+    bl_idname = "mesh.sharpen_chamfered_edges"
+    bl_label = "Sharpen Chamfered Edges"
+    bl_options = {"REGISTER", "UNDO"}
+
+    # One property per ordinary option of the table (set before registering).
+    __annotations__ = {option["key"]: _property(option) for option in _ordinary_options()}
+
+    @classmethod
+    def poll(cls, context):
+        obj = context.active_object
+        return obj is not None and obj.type == "MESH" and context.mode in {"OBJECT", "EDIT_MESH"}
+
+    def execute(self, context):
+        if es is None:
+            self.report({"ERROR"}, "Edge-Sharpener: the edge_sharpener package is missing (" + _import_error + ")")
+            return {"CANCELLED"}
+        obj = context.active_object
+        in_edit_mode = obj.mode == "EDIT"
+        if in_edit_mode:
+            bpy.ops.object.mode_set(mode="OBJECT")  # writes the edit mesh to obj.data
+        try:
+            vertices, faces = mesh_arrays(obj.data)
+            options = {option["key"]: getattr(self, option["key"]) for option in _ordinary_options()}
+            try:
+                new_vertices, new_faces, report = es.sharpen(vertices, faces, **options)
+            except es.InputError as error:
+                self.report({"ERROR"}, f"Edge-Sharpener refused the mesh: {error}")
+                return {"CANCELLED"}
+            colors = report.get("colors", {}).get("faces")
+            replace_geometry(obj.data, new_vertices, new_faces, colors)
+        finally:
+            if in_edit_mode:
+                bpy.ops.object.mode_set(mode="EDIT")
+        placement = report["placement"]
+        self.report({"INFO"}, f"Edge-Sharpener: {placement['moved']} vertices moved onto sharp edges "
+                              f"({placement['fallbacks']} kept), {len(faces)} -> {len(new_faces)} triangles")
+        return {"FINISHED"}
+
+
+def _menu_entry(self, context):
+    self.layout.operator(MESH_OT_sharpen_chamfered_edges.bl_idname)
+
+
+_menus = ("VIEW3D_MT_edit_mesh_clean", "VIEW3D_MT_object_cleanup")
+
+
+def register():
+    bpy.utils.register_class(MESH_OT_sharpen_chamfered_edges)
+    for menu in _menus:
+        getattr(bpy.types, menu).append(_menu_entry)
+
+
+def unregister():
+    for menu in _menus:
+        getattr(bpy.types, menu).remove(_menu_entry)
+    bpy.utils.unregister_class(MESH_OT_sharpen_chamfered_edges)

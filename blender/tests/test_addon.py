@@ -1,0 +1,144 @@
+"""Headless test of the Blender add-on, run by CTest:
+
+  blender -b --factory-startup --python-exit-code 1 --python test_addon.py -- \
+      --addon ZIP_OR_FOLDER --source SOURCE_DIR
+
+Installs the add-on (a zip through Blender's add-on installer, or a folder
+linked into BLENDER_USER_SCRIPTS/addons), voxel-remeshes exact shapes inside
+Blender, runs "Sharpen Chamfered Edges" as the UI does (with an undo step) in
+Object and Edit mode, checks that the distance to the exact shape drops and
+that undo restores the remeshed input, and that a bad mesh is refused with a
+report. Any failed check raises: Blender exits with code 1.
+"""
+import argparse
+import math
+import os
+import pathlib
+import sys
+
+import bpy
+import numpy as np
+
+argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+parser = argparse.ArgumentParser()
+parser.add_argument("--addon", required=True)
+parser.add_argument("--source", required=True)
+args = parser.parse_args(argv)
+sys.path.insert(0, str(pathlib.Path(args.source) / "python" / "tests"))
+from ply import read_ply  # noqa: E402
+
+addon_path = pathlib.Path(args.addon)
+if addon_path.suffix == ".zip":
+    bpy.ops.preferences.addon_install(filepath=str(addon_path))
+else:
+    addons = pathlib.Path(bpy.utils.user_resource("SCRIPTS", path="addons", create=True))
+    link = addons / "edge_sharpener_addon"
+    if not link.exists():
+        link.symlink_to(addon_path.resolve(), target_is_directory=True)
+    bpy.utils.refresh_script_paths()  # the addons folder may be new: put it on sys.path
+bpy.ops.preferences.addon_enable(module="edge_sharpener_addon")
+import edge_sharpener_addon as addon  # noqa: E402
+
+es = addon.es
+assert es is not None, "the add-on could not import edge_sharpener"
+print(f"edge_sharpener from {es.__file__}")
+
+# The operator, its menus and its redo panel (the table's ordinary options).
+assert hasattr(bpy.types, "MESH_OT_sharpen_chamfered_edges")
+for menu in ("VIEW3D_MT_edit_mesh_clean", "VIEW3D_MT_object_cleanup"):
+    assert addon._menu_entry in getattr(bpy.types, menu).draw._draw_funcs, menu
+panel = {p.identifier for p in bpy.ops.mesh.sharpen_chamfered_edges.get_rna_type().properties
+         if p.identifier != "rna_type"}
+assert panel == {o["key"] for o in es.ordinary_options()}, panel
+
+
+def new_object(name, vertices, faces):
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(np.asarray(vertices).tolist(), [], np.asarray(faces).tolist())
+    mesh.update()
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(obj)
+    for other in bpy.context.scene.objects:
+        other.select_set(other == obj)
+    bpy.context.view_layer.objects.active = obj
+    return obj
+
+
+def distance(obj, exact):
+    vertices, faces = addon.mesh_arrays(obj.data)
+    return es.mesh_distance(vertices, faces, *exact, samples=100000)["symmetric"]
+
+
+def sharpen(**options):
+    # ('EXEC_DEFAULT', True): run with an undo step, as from the menu.
+    return bpy.ops.mesh.sharpen_chamfered_edges("EXEC_DEFAULT", True, **options)
+
+
+def check_shape(name, exact, voxel_size):
+    obj = new_object(name, *exact)
+    obj.data.remesh_voxel_size = voxel_size
+    assert bpy.ops.object.voxel_remesh() == {"FINISHED"}
+    remeshed = [a.copy() for a in addon.mesh_arrays(obj.data)]
+    before = distance(obj, exact)
+    bpy.ops.ed.undo_push(message="remeshed")
+
+    for mode in ("OBJECT", "EDIT"):
+        obj = bpy.data.objects[name]  # undo replaces the data blocks
+        bpy.context.view_layer.objects.active = obj
+        bpy.ops.object.mode_set(mode=mode)
+        assert sharpen(method="extended") == {"FINISHED"}
+        bpy.ops.object.mode_set(mode="OBJECT")
+        obj = bpy.data.objects[name]
+        after = distance(obj, exact)
+        print(f"{name} ({len(remeshed[1])} triangles, voxel {voxel_size}), {mode} mode: "
+              f"max {before['max_percent']:.4f}% -> {after['max_percent']:.4f}%, "
+              f"RMS {before['rms_percent']:.5f}% -> {after['rms_percent']:.5f}% of the diagonal")
+        assert after["rms"] < before["rms"] / 3, (before, after)
+        assert after["max"] < before["max"], (before, after)
+        # Undo (in the mode the operator ran in) restores the remeshed input.
+        bpy.ops.object.mode_set(mode=mode)
+        assert bpy.ops.ed.undo() == {"FINISHED"}
+        bpy.ops.object.mode_set(mode="OBJECT")
+        restored = addon.mesh_arrays(bpy.data.objects[name].data)
+        assert np.array_equal(restored[0], remeshed[0]) and np.array_equal(restored[1], remeshed[1]), \
+            f"undo did not restore {name} ({mode} mode)"
+    bpy.data.objects.remove(bpy.data.objects[name])
+
+
+for obj in list(bpy.data.objects):
+    bpy.data.objects.remove(obj)
+
+# A cube turned off the voxel grid's axes (aligned, the remesher is exact).
+corners = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=float)
+quads = np.array([[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]])
+a, b = 0.5, 0.3
+turn = np.array([[math.cos(a), -math.sin(a), 0], [math.sin(a), math.cos(a), 0], [0, 0, 1]]) @ \
+    np.array([[1, 0, 0], [0, math.cos(b), -math.sin(b)], [0, math.sin(b), math.cos(b)]])
+cube_vertices = corners @ turn.T
+cube_triangles = np.concatenate([quads[:, [0, 1, 2]], quads[:, [0, 2, 3]]])
+check_shape("cube", (cube_vertices, cube_triangles), 0.1)
+
+lblock = read_ply(pathlib.Path(args.source) / "test_meshes" / "generated" / "lblock_reference.ply")
+check_shape("lblock", (lblock["vertices"].astype(float) @ turn.T, lblock["faces"]), 0.04)
+
+# Refusal: three triangles on one edge. The operator reports why and leaves the mesh alone.
+fan = new_object("fan", [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1]],
+                 [[0, 1, 2], [1, 0, 3], [0, 1, 4]])
+bpy.ops.ed.undo_push(message="fan")
+try:
+    sharpen()
+except RuntimeError as error:  # bpy.ops raises the operator's ERROR report
+    message = str(error)
+else:
+    raise AssertionError("a non-manifold mesh was not refused")
+print(f"refusal report: {message.strip()}")
+assert "Edge-Sharpener refused the mesh" in message and "non-manifold" in message, message
+assert len(bpy.data.objects["fan"].data.polygons) == 3
+
+# colorize paints the labels into a colour attribute.
+obj = new_object("cube2", cube_vertices, cube_triangles)
+obj.data.remesh_voxel_size = 0.1
+bpy.ops.object.voxel_remesh()
+assert sharpen(colorize=True) == {"FINISHED"}
+assert "Edge-Sharpener labels" in bpy.data.objects["cube2"].data.color_attributes
+print("blender add-on test: all checks passed")

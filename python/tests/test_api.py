@@ -1,0 +1,289 @@
+"""The package's API on numpy arrays: round trips, dtypes, options from the
+table, progress, threads, and every kind of bad input refused with the core's
+message, never a crash, the caller's arrays never modified."""
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import edge_sharpener as es
+from conftest import sample
+
+# An octahedron, consistently oriented (outward normals).
+OCTAHEDRON_V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]],
+                        dtype=np.float64)
+OCTAHEDRON_F = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4],
+                         [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]], dtype=np.int32)
+
+
+@pytest.fixture(scope="module")
+def cube():
+    mesh = sample("cube_mc2")
+    return mesh["vertices"], mesh["faces"]
+
+
+def frozen_copies(*arrays):
+    return [a.copy() for a in arrays]
+
+
+def assert_unchanged(arrays, copies):
+    for a, c in zip(arrays, copies):
+        assert a.dtype == c.dtype and a.shape == c.shape
+        assert np.array_equal(a, c, equal_nan=a.dtype.kind == "f")
+
+
+def test_round_trip_float32_and_float64(cube):
+    v32, f = cube
+    copies = frozen_copies(v32, f)
+    out32 = es.sharpen(v32, f, method="extended")
+    out64 = es.sharpen(v32.astype(np.float64), f.astype(np.int32), method="extended")
+    assert_unchanged((v32, f), copies)
+    assert out32[0].dtype == np.float32 and out64[0].dtype == np.float64
+    for vertices, faces, report in (out32, out64):
+        assert vertices.shape == (report["output"]["vertices"], 3)
+        assert faces.shape == (report["output"]["faces"], 3) and faces.dtype == np.int64
+        assert faces.min() >= 0 and faces.max() < len(vertices)
+        assert report["placement"]["moved"] > 100
+    # Double precision makes the same decisions; the planes' intersections differ
+    # by rounding (the cube is 1 wide, its edges 0.02 long).
+    assert out32[0].shape == out64[0].shape and np.array_equal(out32[1], out64[1])
+    assert np.abs(out32[0] - out64[0]).max() < 1e-3
+    # The paper's method moves only the inserted vertices: the original ones keep
+    # their index and position (in either precision).
+    for vertices in (v32, v32.astype(np.float64)):
+        out = es.sharpen(vertices, f)[0]
+        assert len(out) > len(vertices) and np.array_equal(out[: len(vertices)], vertices)
+    # The result is a valid input again (a second pass finds what is left).
+    es.sharpen(*out32[:2], method="extended")
+
+
+def test_sharpening_reduces_the_distance_to_the_exact_cube(cube):
+    exact = sample("cube_reference")
+    vertices, faces, _ = es.sharpen(*cube, method="extended")
+    before = es.mesh_distance(*cube, exact["vertices"], exact["faces"], samples=50000)
+    after = es.mesh_distance(vertices, faces, exact["vertices"], exact["faces"], samples=50000)
+    assert after["symmetric"]["rms"] < before["symmetric"]["rms"] / 5
+    assert after["symmetric"]["max"] < before["symmetric"]["max"] / 2
+
+
+def test_lists_and_non_contiguous_arrays(cube):
+    v, f = cube
+    strided_v = np.asfortranarray(v)
+    reversed_f = f[::-1][::-1]  # a view, not a copy
+    a = es.sharpen(strided_v, reversed_f)
+    b = es.sharpen(v.tolist(), f.tolist())  # lists: float64 / int64
+    assert np.array_equal(a[1], b[1])
+    assert es.detect(OCTAHEDRON_V.tolist(), OCTAHEDRON_F.tolist()).shape == (8,)
+
+
+def test_options_come_from_the_table():
+    keys = [o["key"] for o in es.OPTIONS]
+    assert keys[:5] == ["method", "multiplier", "edge_length_check", "colorize", "degenerate_angle_deg"]
+    assert [o["key"] for o in es.ordinary_options()] == keys[:5]
+    _, _, report = es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F)
+    for option in es.OPTIONS:  # defaults: the report's options record the table's defaults
+        assert report["options"][option["key"]] == option["default"], option["key"]
+        assert option["key"] in es.sharpen.__doc__ and option["key"] in es.detect.__doc__
+    # Every option can be given; the values come back in the report.
+    _, _, report = es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F, method="extended", multiplier=1.5,
+                              support_rings=3, degenerate_angle_deg=2, sampling_grid_guard=True)
+    assert report["options"]["multiplier"] == 1.5 and report["options"]["support_rings"] == 3
+    assert report["options"]["degenerate_angle_deg"] == 2 and report["options"]["method"] == "extended"
+
+
+def test_a_preset_comes_before_the_settings_it_presets():
+    # strict sets max_source_off_plane_spacings to 0.3; a value given with it wins,
+    # whatever the keyword order.
+    for kwargs in ({"strict": True, "max_source_off_plane_spacings": 0.7},
+                   {"max_source_off_plane_spacings": 0.7, "strict": True}):
+        _, _, report = es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F, method="extended", **kwargs)
+        assert report["options"]["max_source_off_plane_spacings"] == 0.7
+        assert report["options"]["fit_seed_flat_angle_deg"] == 4
+
+
+def test_colorize_returns_colors(cube):
+    vertices, faces, report = es.sharpen(*cube, colorize=True)
+    assert report["colors"]["faces"].shape == (len(faces), 4)
+    assert report["colors"]["vertices"].shape == (len(vertices), 4)
+    assert "colors" not in es.sharpen(*cube)[2]
+
+
+def test_detect_labels(cube):
+    labels = es.detect(*cube, method="extended")
+    counts = np.bincount(labels, minlength=4)
+    assert counts[1] > counts[2] > 0  # mostly smooth regions, some chamfer faces
+    assert es.FACE_LABELS[labels[0]] in es.FACE_LABELS
+
+
+def test_progress_callback(cube):
+    stages = []
+    es.sharpen(*cube, progress=lambda percent, stage: stages.append((percent, stage)))
+    assert [p for p, _ in stages] == sorted(p for p, _ in stages)
+    assert stages[-1][0] == 100 and len(stages) >= 5
+    with pytest.raises(ZeroDivisionError):
+        es.sharpen(*cube, progress=lambda percent, stage: 1 / 0)
+    # A callback may run the package itself; the outer call keeps its own callback.
+    outer = []
+    def nested(percent, stage):
+        outer.append(percent)
+        if percent == 40:
+            es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F, progress=lambda p, s: None)
+    es.sharpen(*cube, progress=nested)
+    assert outer == [p for p, _ in stages]
+    with pytest.raises(TypeError, match="callable"):
+        es.sharpen(*cube, progress=5)
+
+
+def test_threads_run_concurrently_with_identical_results(cube):
+    # The GIL is released while the core runs: threads sharpen at once, each
+    # with its own progress callback, and get what a single call gets.
+    expected = es.sharpen(*cube, method="extended")
+    results, stages = [None] * 4, [[] for _ in range(4)]
+
+    def work(i):
+        results[i] = es.sharpen(*cube, method="extended",
+                                progress=lambda p, s: stages[i].append(p))
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for i, (vertices, faces, _) in enumerate(results):
+        assert np.array_equal(vertices, expected[0]) and np.array_equal(faces, expected[1])
+        assert stages[i][-1] == 100
+
+
+def test_the_gil_is_released_while_the_core_runs():
+    # With a switch interval far beyond the run, Python threads change hands
+    # only where one releases the GIL. The main thread releases it on every
+    # loop (sleep(0), so that the worker's progress callbacks can run); it sees
+    # the worker between two stages only if the core runs without the GIL.
+    mesh = sample("lblock_mc2")
+    stages, seen = [], set()
+    worker = threading.Thread(target=lambda: es.sharpen(
+        mesh["vertices"], mesh["faces"], method="extended", progress=lambda p, s: stages.append(p)))
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1000)
+    try:
+        worker.start()
+        while worker.is_alive():
+            seen.add(len(stages))
+            time.sleep(0)
+        worker.join()
+    finally:
+        sys.setswitchinterval(interval)
+    assert len(stages) == 6
+    assert seen & {1, 2, 3, 4, 5}, seen
+
+
+def non_manifold_edge():
+    v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1]], np.float32)
+    return v, np.array([[0, 1, 2], [1, 0, 3], [0, 1, 4]])
+
+
+def non_manifold_vertex():
+    # Two tetrahedra sharing one vertex.
+    v = np.concatenate([OCTAHEDRON_V[[0, 2, 4, 5]], OCTAHEDRON_V[[0, 2, 4, 5]] * -1 + [2, 0, 0]])
+    v[4] = v[0]
+    tet = np.array([[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]])
+    faces = np.concatenate([tet, np.where(tet == 0, 0, tet + 4)])
+    return v.astype(np.float32), faces
+
+
+def flipped_face():
+    f = OCTAHEDRON_F.copy()
+    f[0] = f[0][::-1]
+    return OCTAHEDRON_V, f
+
+
+def with_value(row, column, value, dtype=np.float64):
+    v = OCTAHEDRON_V.astype(dtype)
+    v[row, column] = value
+    return v, OCTAHEDRON_F
+
+
+BAD_INPUTS = {
+    "vertices 2 columns": ((OCTAHEDRON_V[:, :2], OCTAHEDRON_F), "vertices must be an array of shape \\(n, 3\\), got shape \\(6, 2\\)"),
+    "vertices 1-d": ((OCTAHEDRON_V.ravel(), OCTAHEDRON_F), "got shape \\(18,\\)"),
+    "faces 4 columns": ((OCTAHEDRON_V, np.zeros((2, 4), int)), "faces must be an array of shape \\(n, 3\\)"),
+    "faces 3-d": ((OCTAHEDRON_V, OCTAHEDRON_F[None]), "faces must be an array of shape"),
+    "int vertices": ((OCTAHEDRON_V.astype(int), OCTAHEDRON_F), "vertices must hold float32 or float64 numbers, got int64"),
+    "float16 vertices": ((OCTAHEDRON_V.astype(np.float16), OCTAHEDRON_F), "got float16"),
+    "complex vertices": ((OCTAHEDRON_V.astype(complex), OCTAHEDRON_F), "got complex128"),
+    "object vertices": ((OCTAHEDRON_V.astype(object), OCTAHEDRON_F), "got object"),
+    "string vertices": (("vertices", OCTAHEDRON_F), "vertices must be an array of shape"),
+    "ragged vertices": (([[0, 0, 0], [1, 0]], OCTAHEDRON_F), "vertices must be an array of shape"),
+    "float faces": ((OCTAHEDRON_V, OCTAHEDRON_F.astype(float)), "faces must hold integers, got float64"),
+    "bool faces": ((OCTAHEDRON_V, OCTAHEDRON_F > 2), "faces must hold integers, got bool"),
+    "index out of range": ((OCTAHEDRON_V, np.where(OCTAHEDRON_F == 5, 6, OCTAHEDRON_F)), "face 4 has vertex index 6 out of range \\[0, 6\\)"),
+    "negative index": ((OCTAHEDRON_V, np.where(OCTAHEDRON_F == 5, -1, OCTAHEDRON_F)), "face 4 has vertex index -1 out of range"),
+    "huge unsigned index": ((OCTAHEDRON_V, np.where(OCTAHEDRON_F == 5, np.uint64(2**64 - 1), OCTAHEDRON_F.astype(np.uint64))), "vertex index 18446744073709551615 out of range"),
+    "NaN": (with_value(3, 1, np.nan), "vertex 3 has a NaN or infinite coordinate"),
+    "infinity float32": (with_value(2, 0, np.inf, np.float32), "vertex 2 has a NaN or infinite coordinate"),
+    "non-manifold edge": (non_manifold_edge(), "mesh has non-manifold edges"),
+    "non-manifold vertex": (non_manifold_vertex(), "mesh has 1 non-manifold vertices"),
+    "misoriented": (flipped_face(), "faces are not consistently oriented"),
+    "repeated vertex": ((OCTAHEDRON_V, np.array([[0, 0, 1]])), "face 0 repeats a vertex"),
+    "empty": ((np.zeros((0, 3)), np.zeros((0, 3), int)), "mesh is empty"),
+    "no faces": ((OCTAHEDRON_V, np.zeros((0, 3), int)), "mesh has no faces"),
+}
+
+
+@pytest.mark.parametrize("function", [es.sharpen, es.detect])
+@pytest.mark.parametrize("case", BAD_INPUTS, ids=str)
+def test_bad_input_is_refused_with_the_core_message(case, function):
+    (vertices, faces), message = BAD_INPUTS[case]
+    arrays = [a for a in (vertices, faces) if isinstance(a, np.ndarray)]
+    copies = frozen_copies(*arrays)
+    with pytest.raises(es.InputError, match=message):
+        function(vertices, faces)
+    assert_unchanged(arrays, copies)
+    assert issubclass(es.InputError, ValueError)
+
+
+BAD_OPTIONS = [
+    ({"nonsense": 1}, TypeError, "unexpected keyword argument 'nonsense'"),
+    ({"vertices": 1}, TypeError, "incompatible function arguments"),
+    ({"multiplier": 0}, es.InputError, "option multiplier must be in \\(0, 100\\]"),
+    ({"multiplier": -1.0}, es.InputError, "option multiplier must be in"),
+    ({"multiplier": float("nan")}, es.InputError, "must be a finite number"),
+    ({"degenerate_angle_deg": 60}, es.InputError, "option degenerate_angle_deg must be in \\[0, 59\\] deg"),
+    ({"support_rings": 2.5}, es.InputError, "support_rings must be a whole number"),
+    ({"support_rings": 0}, es.InputError, "support_rings must be in \\[1, 20\\]"),
+    ({"colorize": 2}, es.InputError, "colorize must be true or false"),
+    ({"method": "best"}, es.InputError, "method has no such choice 'best' \\('paper', 'extended'\\)"),
+    ({"method": 1}, TypeError, "method must be one of 'paper', 'extended'"),
+    ({"multiplier": "2"}, TypeError, "multiplier must be a number, got str"),
+    ({"multiplier": None}, TypeError, "multiplier must be a number, got NoneType"),
+    ({"multiplier": [2]}, TypeError, "multiplier must be a number, got list"),
+]
+
+
+@pytest.mark.parametrize("options, error, message", BAD_OPTIONS, ids=lambda x: str(x)[:40])
+def test_bad_options_are_refused(options, error, message):
+    copies = frozen_copies(OCTAHEDRON_V, OCTAHEDRON_F)
+    for function in (es.sharpen, es.detect):
+        with pytest.raises(error, match=message):
+            function(OCTAHEDRON_V, OCTAHEDRON_F, **options)
+    assert_unchanged((OCTAHEDRON_V, OCTAHEDRON_F), copies)
+
+
+def test_mesh_distance_bad_input():
+    v, f = OCTAHEDRON_V, OCTAHEDRON_F
+    assert es.mesh_distance(v, f, v, f)["symmetric"]["max"] < 1e-12
+    cases = [
+        ((v, f[:0], v, f), {}, "a mesh has no faces"),
+        ((v, f, with_value(0, 0, np.nan)[0], f), {}, "b mesh has NaN or infinite"),
+        ((v, f + 1, v, f), {}, "out of range"),
+        ((v[:, :2], f, v, f), {}, "a_vertices must be an array of shape"),
+        ((v, f, v, f.astype(float)), {}, "b_faces must hold integers"),
+        ((np.zeros((3, 3)), [[0, 1, 2]], v, f), {}, "zero surface area"),
+        ((v, f, v, f), {"samples": 0}, "samples must be in"),
+        ((v, f, v, f), {"seed": -1}, "seed must be in"),
+    ]
+    for arrays, kwargs, message in cases:
+        with pytest.raises(es.InputError, match=message):
+            es.mesh_distance(*arrays, **kwargs)
