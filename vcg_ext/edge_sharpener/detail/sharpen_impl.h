@@ -147,9 +147,9 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
           nearSharpEdge[plan.inserted[k].original[i]] = 1;
     projectZoneVertices(m, zones, plan.originalVertexCount, nearSharpEdge, opt, report.extended);
     if (opt.samplingGridGuard) {
-      report.grid = revertGridContradictions(m, plan, labels, zones.samplingGrid,
-                                             restBeforeProjection, opt.gridSweepToleranceCells);
-      revertBlendedFeatures(m, plan, labels, zones.support.region, opt.gridBlendedFeatureFraction,
+      report.grid =
+          revertGridContradictions(m, moves, zones.samplingGrid, opt.gridSweepToleranceCells);
+      revertBlendedFeatures(moves, zones.support.region, opt.gridBlendedFeatureFraction,
                             report.grid);
       report.extended.projectedVertices -= report.grid.zoneReverted;
     }
