@@ -61,27 +61,16 @@ void forEachNeighbour(const MeshType &m, const VertexFaceTable &vf, std::size_t 
 
 }  // namespace detail
 
-/// Splits the smooth part into regions: the components of faces joined by
-/// smooth edges that hold one of the paper's core faces (filters 1-2), one id
-/// per component, then returns to the zone every region thinner than `minDepth` hops
-/// (a corridor of smooth triangles, e.g. a wide but regular chamfer band).
-/// `meshHasBorder` false (no edge with one face: SmoothEdgeStats::boundaryEdges
-/// is 0) skips looking for border edges.
-/// \pre labelSmoothEdges() ran; m is compact (no deleted faces).
-/// Writes labels.vertex/face like filters 1-2.
+namespace detail {
+
+/// Components of faces joined by smooth edges, as a union-find forest whose
+/// every root is the smallest face of its component. Union-find in face
+/// order: sequential, where a flood fill walks the faces at random. A union
+/// links the larger root under the smaller, so the roots do not depend on
+/// the order of the unions: each thread joins the edges inside its own range
+/// of faces, then the edges between ranges are joined serially.
 template <class MeshType>
-void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceTable &vf,
-                    int minDepth, FeatureZones &zones, ExtendedStats &stats,
-                    bool meshHasBorder = true) {
-  paintInteriorRedVertices(m, labels);
-  paintCoreRedFaces(m, labels);
-  // Components of faces joined by smooth edges (union-find in face order:
-  // sequential, where a flood fill walks the faces at random);
-  // the components holding a core red face are the regions, numbered in the
-  // order of their first red face. A union links the larger root under the
-  // smaller, so every root is the smallest face of its component whatever
-  // the order of the unions: each thread joins the edges inside its own
-  // range of faces, then the edges between ranges are joined serially.
+std::vector<std::uint32_t> smoothComponents(const MeshType &m, const MeshLabels<MeshType> &labels) {
   const std::size_t nf = m.face.size();
   std::vector<std::uint32_t> parent(nf);
   for (std::size_t f = 0; f < nf; ++f) parent[f] = std::uint32_t(f);
@@ -100,7 +89,7 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
   for (int t = 0; t < ranges; ++t) {
     const std::int64_t first = faceCount * t / ranges, last = faceCount * (t + 1) / ranges;
     for (std::int64_t fi = first; fi < last; ++fi) {
-      auto &f = m.face[fi];
+      const auto &f = m.face[fi];
       if (f.IsD()) continue;
       for (int i = 0; i < 3; ++i) {
         const auto *g = f.cFFp(i);
@@ -115,12 +104,22 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
   }
   for (const auto &edges : between)
     for (const auto &[a, b] : edges) unite(a, b);
+  return parent;
+}
+
+/// Numbers the components holding a core red face, in the order of their
+/// first red face, into zones.faceRegion (kZone elsewhere).
+/// \return the number of regions.
+template <class MeshType>
+int numberRegions(const MeshLabels<MeshType> &labels, std::vector<std::uint32_t> &parent,
+                  FeatureZones &zones) {
   // Every root is the smallest face of its component (a union keeps the
   // smaller root, halving points to smaller faces), so one pass in face order
   // points every face at its root; the root's entry of faceRegion holds the
   // region id until the second pass copies it to the component.
   // (The mesh is compact here: no face is deleted, and these passes read
   // labels and parents only, never the faces themselves.)
+  const std::size_t nf = parent.size();
   zones.faceRegion.assign(nf, kZone);
   int regions = 0;
   for (std::size_t fi = 0; fi < nf; ++fi) {
@@ -130,15 +129,22 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
       if (id == kZone) id = regions++;
     }
   }
+  const std::int64_t faceCount = std::int64_t(nf);
 #pragma omp parallel for schedule(static, 8192) if (faceCount > kParallelMin)
   for (std::int64_t fi = 0; fi < faceCount; ++fi)
     if (parent[fi] != fi) zones.faceRegion[fi] = zones.faceRegion[parent[fi]];
+  return regions;
+}
 
-  // Depth of each region's vertices from the region's border, in hops.
-  // Interior vertices (all faces in one region, no border edge) first, on
-  // every core; the others start the waves.
+/// Per vertex: its region when all its faces lie in that one region and no
+/// border edge ends there (an interior vertex), else kZone. Border edges are
+/// looked for only where the mesh has one (`meshHasBorder`): it reads the
+/// faces themselves. Runs on every core.
+template <class MeshType>
+std::vector<int> interiorVertexRegions(const MeshType &m, const VertexFaceTable &vf,
+                                       const FeatureZones &zones, bool meshHasBorder) {
   const std::int64_t nv = std::int64_t(m.vert.size());
-  std::vector<int> depth(nv, -1), vertexRegion(nv, kZone);
+  std::vector<int> vertexRegion(nv, kZone);
 #pragma omp parallel for schedule(static, 8192) if (nv > kParallelMin)
   for (std::int64_t v = 0; v < nv; ++v) {
     if (vf.degree(v) == 0) continue;
@@ -146,8 +152,6 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
     bool interior = r != kZone;
     for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v) && interior; ++fi)
       interior = zones.faceRegion[*fi] == r;
-    // A border edge at v (only looked for where the mesh has one: it reads
-    // the faces themselves).
     for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v) && interior && meshHasBorder;
          ++fi) {
       const auto &f = m.face[*fi];
@@ -158,32 +162,50 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
     }
     if (interior) vertexRegion[v] = r;
   }
+  return vertexRegion;
+}
+
+/// Each region's depth in hops from its border, capped at `minDepth`: waves
+/// from every non-interior vertex, which stop there instead of sweeping
+/// every region's interior (only whether a region reaches minDepth matters).
+template <class MeshType>
+std::vector<int> regionDepths(const MeshType &m, const VertexFaceTable &vf,
+                              const std::vector<int> &vertexRegion, int regions, int minDepth) {
+  const std::size_t nv = m.vert.size();
+  std::vector<int> depth(nv, -1);
   std::deque<std::size_t> queue;
-  for (std::int64_t v = 0; v < nv; ++v)
+  for (std::size_t v = 0; v < nv; ++v)
     if (vf.degree(v) > 0 && vertexRegion[v] == kZone) {
       depth[v] = 0;
-      queue.push_back(std::size_t(v));
+      queue.push_back(v);
     }
   std::vector<int> maxDepth(regions, 0);
   while (!queue.empty()) {
     const std::size_t v = queue.front();
     queue.pop_front();
-    // Only whether a region reaches minDepth matters: the waves stop there
-    // instead of sweeping every region's interior.
     if (depth[v] >= minDepth) continue;
-    detail::forEachNeighbour(m, vf, v, [&](std::size_t u) {
+    forEachNeighbour(m, vf, v, [&](std::size_t u) {
       if (depth[u] >= 0 || vertexRegion[u] == kZone) return;
       depth[u] = depth[v] + 1;
       maxDepth[vertexRegion[u]] = std::max(maxDepth[vertexRegion[u]], depth[u]);
       queue.push_back(u);
     });
   }
+  return maxDepth;
+}
+
+/// Returns to the zone every region thinner than `minDepth` (a corridor) and
+/// renumbers the others in order; counts regions, corridors and zone faces.
+inline void dropCorridors(const std::vector<int> &maxDepth, int minDepth, FeatureZones &zones,
+                          ExtendedStats &stats) {
+  const int regions = int(maxDepth.size());
   std::vector<int> renumber(regions, kZone);
   int kept = 0;
   for (int r = 0; r < regions; ++r)
     if (maxDepth[r] >= minDepth) renumber[r] = kept++;
   stats.regions = std::size_t(kept);
   stats.corridors = std::size_t(regions - kept);
+  const std::int64_t faceCount = std::int64_t(zones.faceRegion.size());
   std::int64_t zoneFaces = 0;
 #pragma omp parallel for schedule(static, 8192) reduction(+ : zoneFaces) if (faceCount > kParallelMin)
   for (std::int64_t f = 0; f < faceCount; ++f) {
@@ -192,6 +214,30 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
     zoneFaces += r == kZone;
   }
   stats.zoneFaces += std::size_t(zoneFaces);
+}
+
+}  // namespace detail
+
+/// Splits the smooth part into regions: the components of faces joined by
+/// smooth edges that hold one of the paper's core faces (filters 1-2), one id
+/// per component, then returns to the zone every region thinner than `minDepth` hops
+/// (a corridor of smooth triangles, e.g. a wide but regular chamfer band).
+/// `meshHasBorder` false (no edge with one face: SmoothEdgeStats::boundaryEdges
+/// is 0) skips looking for border edges.
+/// \pre labelSmoothEdges() ran; m is compact (no deleted faces).
+/// Writes labels.vertex/face like filters 1-2.
+template <class MeshType>
+void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceTable &vf,
+                    int minDepth, FeatureZones &zones, ExtendedStats &stats,
+                    bool meshHasBorder = true) {
+  paintInteriorRedVertices(m, labels);
+  paintCoreRedFaces(m, labels);
+  std::vector<std::uint32_t> parent = detail::smoothComponents(m, labels);
+  const int regions = detail::numberRegions(labels, parent, zones);
+  std::vector<std::uint32_t>().swap(parent);
+  const std::vector<int> vertexRegion = detail::interiorVertexRegions(m, vf, zones, meshHasBorder);
+  detail::dropCorridors(detail::regionDepths(m, vf, vertexRegion, regions, minDepth), minDepth,
+                        zones, stats);
 }
 
 /// Returns to the zone every region face incident to a marked vertex.
@@ -324,6 +370,107 @@ std::vector<char> verticesTouchingZone(const MeshType &m, const VertexFaceTable 
   return touches;
 }
 
+namespace detail {
+
+/// A face of a region plane fit: unit normal, centroid, area, and whether no
+/// vertex of it touches the zone.
+struct FittedFace {
+  Vec3 normal, centroid;
+  double area;
+  bool awayFromZone;
+};
+
+/// The faces of region `r` within `s.rings` face rings of v, with their
+/// area-weighted sums (faces of zero area count in the sums only).
+struct RegionFaces {
+  std::vector<FittedFace> faces;
+  Vec3 normalSum{0, 0, 0}, centroidSum{0, 0, 0};
+  double areaSum = 0;
+};
+
+/// Collects the faces of region `r` within `s.rings` face rings of v,
+/// marking each visited face with `stampValue` in `stamp`.
+template <class MeshType>
+RegionFaces collectRegionFaces(const MeshType &m, const VertexFaceTable &vf,
+                               const FeatureZones &zones, std::size_t v, int r,
+                               const PlaneFitSettings &s, std::vector<int> &stamp, int stampValue) {
+  RegionFaces out;
+  std::vector<std::size_t> frontier{v}, next;
+  for (int ring = 0; ring < s.rings && !frontier.empty(); ++ring) {
+    next.clear();
+    for (std::size_t w : frontier)
+      for (const std::uint32_t *fi = vf.begin(w); fi != vf.end(w); ++fi) {
+        if (zones.faceRegion[*fi] != r || stamp[*fi] == stampValue) continue;
+        stamp[*fi] = stampValue;
+        const auto &f = m.face[*fi];
+        const Vec3 p0 = positionOf(f.cV(0)), p1 = positionOf(f.cV(1)), p2 = positionOf(f.cV(2));
+        const Vec3 n = (p1 - p0) ^ (p2 - p0);  // twice the area times the unit normal
+        const double area = n.Norm();
+        out.normalSum += n;
+        bool away = s.nearZone != nullptr;
+        for (int k = 0; k < 3 && away; ++k) away = !(*s.nearZone)[vcg::tri::Index(m, f.cV(k))];
+        if (area > 0) out.faces.push_back(FittedFace{n / area, (p0 + p1 + p2) / 3.0, area, away});
+        out.centroidSum += (p0 + p1 + p2) * (area / 3.0);
+        out.areaSum += area;
+        for (int k = 0; k < 3; ++k) next.push_back(vcg::tri::Index(m, f.cV(k)));
+      }
+    frontier.swap(next);
+  }
+  return out;
+}
+
+/// The mean normal of the faces away from the zone when those turn from it
+/// by at most `flatRad` (the faces next to the zone may be a strip of the
+/// chamfer the region absorbed); else `normal` unchanged.
+inline Vec3 seedAwayFromZone(const std::vector<FittedFace> &faces, const Vec3 &normal,
+                             double flatRad) {
+  Vec3 awaySum(0, 0, 0);
+  for (const FittedFace &f : faces)
+    if (f.awayFromZone) awaySum += f.normal * f.area;
+  bool flat = awaySum.Norm() > 0;
+  for (const FittedFace &f : faces)
+    flat = flat && (!f.awayFromZone || angleBetween(awaySum, f.normal) <= flatRad);
+  return flat ? awaySum / awaySum.Norm() : normal;
+}
+
+/// Refits the plane without the faces more than `trimRad` away from its
+/// normal (the border of a region often holds a few faces of the chamfer);
+/// drops them from `in` when some remain.
+inline void trimTurnedFaces(RegionFaces &in, double trimRad, Plane &plane) {
+  Vec3 n2(0, 0, 0), c2(0, 0, 0);
+  double a2 = 0;
+  std::vector<FittedFace> kept;
+  for (const FittedFace &f : in.faces)
+    if (angleBetween(plane.normal, f.normal) <= trimRad) {
+      n2 += f.normal * f.area;
+      c2 += f.centroid * f.area;
+      a2 += f.area;
+      kept.push_back(f);
+    }
+  if (a2 > 0 && n2.Norm() > 0) {
+    plane = Plane{c2 / a2, n2 / n2.Norm()};
+    in.faces.swap(kept);
+    in.areaSum = a2;
+  }
+}
+
+/// The spread of the fitted faces around fit.plane (placement reads it to
+/// tell a curved region from a flat one).
+inline void measureSpread(const std::vector<FittedFace> &faces, double areaSum,
+                          RegionPlaneFit &fit) {
+  for (const FittedFace &f : faces) {
+    fit.spreadRad = std::max(fit.spreadRad, angleBetween(fit.plane.normal, f.normal));
+    fit.normalScatter.add(f.normal - fit.plane.normal, f.centroid - fit.plane.point, f.area);
+    fit.pointScatter.add(f.centroid - fit.plane.point, f.centroid - fit.plane.point, f.area);
+    fit.normalSelfScatter.add(f.normal - fit.plane.normal, f.normal - fit.plane.normal, f.area);
+  }
+  fit.normalScatter.scale(1.0 / areaSum);
+  fit.pointScatter.scale(1.0 / areaSum);
+  fit.normalSelfScatter.scale(1.0 / areaSum);
+}
+
+}  // namespace detail
+
 /// The plane of region `r` near vertex v: through the area-weighted centroid,
 /// and orthogonal to the area-weighted normal, of the region's faces within
 /// `s.rings` face rings of v (zero normal when v touches no face of r),
@@ -337,80 +484,17 @@ template <class MeshType>
 RegionPlaneFit fitRegionPlane(const MeshType &m, const VertexFaceTable &vf,
                               const FeatureZones &zones, std::size_t v, int r,
                               const PlaneFitSettings &s, std::vector<int> &stamp, int stampValue) {
-  struct Fitted {
-    Vec3 normal, centroid;
-    double area;
-    bool awayFromZone;  ///< no vertex of the face touches the zone
-  };
-  const int rings = s.rings;
-  const double trimRad = s.trimRad;
-  std::vector<std::size_t> frontier{v}, next;
-  std::vector<Fitted> faces;
-  Vec3 normalSum(0, 0, 0), centroidSum(0, 0, 0);
-  double areaSum = 0;
-  for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
-    next.clear();
-    for (std::size_t w : frontier)
-      for (const std::uint32_t *fi = vf.begin(w); fi != vf.end(w); ++fi) {
-        if (zones.faceRegion[*fi] != r || stamp[*fi] == stampValue) continue;
-        stamp[*fi] = stampValue;
-        const auto &f = m.face[*fi];
-        const Vec3 p0 = positionOf(f.cV(0)), p1 = positionOf(f.cV(1)), p2 = positionOf(f.cV(2));
-        const Vec3 n = (p1 - p0) ^ (p2 - p0);  // twice the area times the unit normal
-        const double area = n.Norm();
-        normalSum += n;
-        bool away = s.nearZone != nullptr;
-        for (int k = 0; k < 3 && away; ++k) away = !(*s.nearZone)[vcg::tri::Index(m, f.cV(k))];
-        if (area > 0) faces.push_back(Fitted{n / area, (p0 + p1 + p2) / 3.0, area, away});
-        centroidSum += (p0 + p1 + p2) * (area / 3.0);
-        areaSum += area;
-        for (int k = 0; k < 3; ++k) next.push_back(vcg::tri::Index(m, f.cV(k)));
-      }
-    frontier.swap(next);
-  }
+  detail::RegionFaces collected =
+      detail::collectRegionFaces(m, vf, zones, v, r, s, stamp, stampValue);
   RegionPlaneFit fit;
   fit.plane.point = positionOf(&m.vert[v]);
-  const double len = normalSum.Norm();
-  if (!(areaSum > 0) || !(len > 0)) return fit;
-  fit.plane = Plane{centroidSum / areaSum, normalSum / len};
-  if (s.seedFlatRad > 0) {
-    Vec3 awaySum(0, 0, 0);
-    for (const Fitted &f : faces)
-      if (f.awayFromZone) awaySum += f.normal * f.area;
-    bool flat = awaySum.Norm() > 0;
-    for (const Fitted &f : faces)
-      flat = flat && (!f.awayFromZone || angleBetween(awaySum, f.normal) <= s.seedFlatRad);
-    if (flat) fit.plane.normal = awaySum / awaySum.Norm();
-  }
-  if (trimRad > 0) {
-    // Refit without the faces that turn away from the dominant normal: the
-    // border of a region often holds a few faces of the chamfer.
-    const double trim = trimRad;
-    Vec3 n2(0, 0, 0), c2(0, 0, 0);
-    double a2 = 0;
-    std::vector<Fitted> kept;
-    for (const Fitted &f : faces)
-      if (angleBetween(fit.plane.normal, f.normal) <= trim) {
-        n2 += f.normal * f.area;
-        c2 += f.centroid * f.area;
-        a2 += f.area;
-        kept.push_back(f);
-      }
-    if (a2 > 0 && n2.Norm() > 0) {
-      fit.plane = Plane{c2 / a2, n2 / n2.Norm()};
-      faces.swap(kept);
-      areaSum = a2;
-    }
-  }
-  for (const Fitted &f : faces) {
-    fit.spreadRad = std::max(fit.spreadRad, angleBetween(fit.plane.normal, f.normal));
-    fit.normalScatter.add(f.normal - fit.plane.normal, f.centroid - fit.plane.point, f.area);
-    fit.pointScatter.add(f.centroid - fit.plane.point, f.centroid - fit.plane.point, f.area);
-    fit.normalSelfScatter.add(f.normal - fit.plane.normal, f.normal - fit.plane.normal, f.area);
-  }
-  fit.normalScatter.scale(1.0 / areaSum);
-  fit.pointScatter.scale(1.0 / areaSum);
-  fit.normalSelfScatter.scale(1.0 / areaSum);
+  const double len = collected.normalSum.Norm();
+  if (!(collected.areaSum > 0) || !(len > 0)) return fit;
+  fit.plane = Plane{collected.centroidSum / collected.areaSum, collected.normalSum / len};
+  if (s.seedFlatRad > 0)
+    fit.plane.normal = detail::seedAwayFromZone(collected.faces, fit.plane.normal, s.seedFlatRad);
+  if (s.trimRad > 0) detail::trimTurnedFaces(collected, s.trimRad, fit.plane);
+  detail::measureSpread(collected.faces, collected.areaSum, fit);
   return fit;
 }
 
@@ -599,23 +683,14 @@ void collectNearbyRegions(const MeshType &m, const VertexFaceTable &vf, FeatureZ
   }
 }
 
-/// Labels every vertex: region vertices with their region (kCrease where
-/// several regions meet), zone vertices with the nearby region (within
-/// `opt.labelSlackHops` of the closest one, at most `opt.maxLabelHops` away)
-/// whose local plane is nearest; fills each labelled vertex's plane.
+namespace detail {
+
+/// Region vertices take their region (kCrease where several meet), zone
+/// vertices kZone; fills zones.vertexLabel and zones.inRegion. Each vertex
+/// reads only its own faces, so the loop runs on every core.
 template <class MeshType>
-void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const SharpenOptions &opt,
-                       FeatureZones &zones, ExtendedStats &stats) {
-  const std::size_t nv = m.vert.size();
-  zones.vertexLabel.assign(nv, kZone);
-  zones.inRegion.assign(nv, 0);
-  zones.support.reset(nv);
-  zones.support.measured = true;
-  const std::vector<char> touchesZone = verticesTouchingZone(m, vf, zones);
-  const PlaneFitSettings fitSettings = PlaneFitSettings::from(opt, touchesZone);
-  // Region vertices take their region (kCrease where several meet); each
-  // vertex reads only its own faces, so the loop runs on every core.
-  const std::int64_t count = std::int64_t(nv);
+void labelRegionVertices(const MeshType &m, const VertexFaceTable &vf, FeatureZones &zones) {
+  const std::int64_t count = std::int64_t(m.vert.size());
 #pragma omp parallel for schedule(static, 8192) if (count > kParallelMin)
   for (std::int64_t v = 0; v < count; ++v) {
     int label = kZone;
@@ -630,57 +705,72 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
     zones.vertexLabel[v] = label;
     zones.inRegion[v] = label != kZone;
   }
-  // Region vertices next to the zone get their region's plane there (one
-  // fit each, in vertex order); zone vertices wait for a label.
-  std::vector<std::uint32_t> fitted, zone;
-  for (std::size_t v = 0; v < nv; ++v) {
-    if (zones.vertexLabel[v] >= 0 && touchesZone[v]) fitted.push_back(std::uint32_t(v));
-    if (!zones.inRegion[v] && vf.degree(v) > 0) zone.push_back(std::uint32_t(v));
-  }
-  stats.zoneVertices += zone.size();
-  zones.support.fits.resize(fitted.size());
-  {
-    const std::int64_t fits = std::int64_t(fitted.size());
-    const int threads = fits >= 256 ? detail::maxThreads() : 1;
-    // Per thread: stamps of the faces a fit has visited (each fit its own value).
-    std::vector<std::vector<int>> stamps(threads);
-#pragma omp parallel for schedule(dynamic, 64) num_threads(threads)
-    for (std::int64_t k = 0; k < fits; ++k) {
-      std::vector<int> &stamp = stamps[detail::threadNumber()];
-      if (stamp.empty()) stamp.assign(m.face.size(), -1);
-      const std::size_t v = fitted[k];
-      zones.support.fits[k] =
-          fitRegionPlane(m, vf, zones, v, zones.vertexLabel[v], fitSettings, stamp, int(k));
-    }
-    for (std::size_t k = 0; k < fitted.size(); ++k)
-      zones.support.fitOf[fitted[k]] = std::uint32_t(k);
-  }
+}
 
-  // Breadth-first waves from every fitted region vertex into the zone; each
-  // zone vertex keeps the first arrival of up to four regions.
-  struct Candidate {
-    int region;
-    std::uint32_t anchor;
-    int hops;
-  };
-  constexpr std::size_t kMaxCandidates = 4;
+/// Fits each region vertex of `fitted` its region's plane there (one fit
+/// each, on every core, each thread with its own visit stamps) into
+/// zones.support.
+template <class MeshType>
+void fitPlanesAtZone(const MeshType &m, const VertexFaceTable &vf,
+                     const std::vector<std::uint32_t> &fitted, const PlaneFitSettings &fitSettings,
+                     FeatureZones &zones) {
+  zones.support.fits.resize(fitted.size());
+  const std::int64_t fits = std::int64_t(fitted.size());
+  const int threads = fits >= 256 ? detail::maxThreads() : 1;
+  // Per thread: stamps of the faces a fit has visited (each fit its own value).
+  std::vector<std::vector<int>> stamps(threads);
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads)
+  for (std::int64_t k = 0; k < fits; ++k) {
+    std::vector<int> &stamp = stamps[detail::threadNumber()];
+    if (stamp.empty()) stamp.assign(m.face.size(), -1);
+    const std::size_t v = fitted[k];
+    zones.support.fits[k] =
+        fitRegionPlane(m, vf, zones, v, zones.vertexLabel[v], fitSettings, stamp, int(k));
+  }
+  for (std::size_t k = 0; k < fitted.size(); ++k) zones.support.fitOf[fitted[k]] = std::uint32_t(k);
+}
+
+/// A region offered to a zone vertex: its id, the fitted vertex whose plane
+/// it offers, and how many hops away that vertex is.
+struct LabelCandidate {
+  int region;
+  std::uint32_t anchor;
+  int hops;
+};
+constexpr std::size_t kMaxLabelCandidates = 4;
+
+/// The regions offered to each vertex of `zone` (same order; up to
+/// kMaxLabelCandidates each).
+struct ZoneCandidates {
+  std::vector<std::array<LabelCandidate, kMaxLabelCandidates>> list;
+  std::vector<std::uint8_t> count;
+};
+
+/// Breadth-first waves from every fitted region vertex into the zone; each
+/// zone vertex keeps the first arrival of up to four regions, within
+/// `opt.labelSlackHops` of the first, at most `opt.maxLabelHops` away.
+template <class MeshType>
+ZoneCandidates offerRegions(const MeshType &m, const VertexFaceTable &vf, const SharpenOptions &opt,
+                            const FeatureZones &zones, const std::vector<std::uint32_t> &fitted,
+                            const std::vector<std::uint32_t> &zone) {
   constexpr std::uint32_t kNotZone = ~std::uint32_t(0);
-  std::vector<std::uint32_t> zoneSlot(nv, kNotZone);
+  std::vector<std::uint32_t> zoneSlot(m.vert.size(), kNotZone);
   for (std::size_t k = 0; k < zone.size(); ++k) zoneSlot[zone[k]] = std::uint32_t(k);
-  std::vector<std::array<Candidate, kMaxCandidates>> cand(zone.size());
-  std::vector<std::uint8_t> candCount(zone.size(), 0);
-  std::deque<std::pair<std::uint32_t, Candidate>> queue;
-  for (const std::uint32_t v : fitted) queue.push_back({v, Candidate{zones.vertexLabel[v], v, 0}});
+  ZoneCandidates cand{std::vector<std::array<LabelCandidate, kMaxLabelCandidates>>(zone.size()),
+                      std::vector<std::uint8_t>(zone.size(), 0)};
+  std::deque<std::pair<std::uint32_t, LabelCandidate>> queue;
+  for (const std::uint32_t v : fitted)
+    queue.push_back({v, LabelCandidate{zones.vertexLabel[v], v, 0}});
   while (!queue.empty()) {
     const auto [v, c] = queue.front();
     queue.pop_front();
     if (c.hops >= opt.maxLabelHops) continue;
-    detail::forEachNeighbour(m, vf, v, [&, c = c](std::size_t u) {
+    forEachNeighbour(m, vf, v, [&, c = c](std::size_t u) {
       const std::uint32_t slot = zoneSlot[u];
       if (slot == kNotZone) return;
-      auto &list = cand[slot];
-      std::uint8_t &n = candCount[slot];
-      if (n == kMaxCandidates) return;
+      auto &list = cand.list[slot];
+      std::uint8_t &n = cand.count[slot];
+      if (n == kMaxLabelCandidates) return;
       if (n > 0 && c.hops + 1 > list[0].hops + opt.labelSlackHops) return;
       // One candidate per surface: a region that leaked around a fading
       // feature offers one per plane direction.
@@ -689,27 +779,64 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
             !planesTurnApart(zones.support.plane(list[i].anchor).normal,
                              zones.support.plane(c.anchor).normal, opt.sameRegionFeatureAngleRad))
           return;
-      list[n++] = Candidate{c.region, c.anchor, c.hops + 1};
+      list[n++] = LabelCandidate{c.region, c.anchor, c.hops + 1};
       queue.push_back({std::uint32_t(u), list[n - 1]});
     });
   }
+  return cand;
+}
+
+/// Gives each zone vertex the offered region whose plane lies nearest, and
+/// shares that plane's fit.
+template <class MeshType>
+void labelByNearestPlane(const MeshType &m, const std::vector<std::uint32_t> &zone,
+                         const ZoneCandidates &cand, FeatureZones &zones, ExtendedStats &stats) {
   for (std::size_t k = 0; k < zone.size(); ++k) {
     const std::size_t v = zone[k];
-    if (candCount[k] == 0) continue;
+    if (cand.count[k] == 0) continue;
     const Vec3 p = positionOf(&m.vert[v]);
     double best = std::numeric_limits<double>::infinity();
-    for (std::uint8_t i = 0; i < candCount[k]; ++i) {
-      const Plane &pl = zones.support.plane(cand[k][i].anchor);
+    for (std::uint8_t i = 0; i < cand.count[k]; ++i) {
+      const Plane &pl = zones.support.plane(cand.list[k][i].anchor);
       if (pl.normal.SquaredNorm() == 0) continue;
       const double d = std::abs(pl.normal * (p - pl.point));
       if (d < best) {  // ties keep the earlier (closer in hops) candidate
         best = d;
-        zones.vertexLabel[v] = cand[k][i].region;
-        zones.support.shareFit(v, cand[k][i].anchor);
+        zones.vertexLabel[v] = cand.list[k][i].region;
+        zones.support.shareFit(v, cand.list[k][i].anchor);
       }
     }
     stats.labelledZoneVertices += zones.vertexLabel[v] >= 0;
   }
+}
+
+}  // namespace detail
+
+/// Labels every vertex: region vertices with their region (kCrease where
+/// several regions meet), zone vertices with the nearby region (within
+/// `opt.labelSlackHops` of the closest one, at most `opt.maxLabelHops` away)
+/// whose local plane is nearest; fills each labelled vertex's plane.
+template <class MeshType>
+void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const SharpenOptions &opt,
+                       FeatureZones &zones, ExtendedStats &stats) {
+  const std::size_t nv = m.vert.size();
+  zones.vertexLabel.assign(nv, kZone);
+  zones.inRegion.assign(nv, 0);
+  zones.support.reset(nv);
+  zones.support.measured = true;
+  const std::vector<char> touchesZone = verticesTouchingZone(m, vf, zones);
+  detail::labelRegionVertices(m, vf, zones);
+  // Region vertices next to the zone get their region's plane there (in
+  // vertex order); zone vertices wait for a label.
+  std::vector<std::uint32_t> fitted, zone;
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (zones.vertexLabel[v] >= 0 && touchesZone[v]) fitted.push_back(std::uint32_t(v));
+    if (!zones.inRegion[v] && vf.degree(v) > 0) zone.push_back(std::uint32_t(v));
+  }
+  stats.zoneVertices += zone.size();
+  detail::fitPlanesAtZone(m, vf, fitted, PlaneFitSettings::from(opt, touchesZone), zones);
+  const detail::ZoneCandidates cand = detail::offerRegions(m, vf, opt, zones, fitted, zone);
+  detail::labelByNearestPlane(m, zone, cand, zones, stats);
   collectNearbyRegions(m, vf, zones, opt.supportRings);
 }
 
@@ -772,6 +899,85 @@ FilterStats markZoneChamfers(MeshType &m, MeshLabels<MeshType> &labels, const Fe
   return s;
 }
 
+namespace detail {
+
+/// The faces after the split of each original vertex v with `candidate(v)`,
+/// in increasing order: facesOf[slot[v]] (slot kNone for the others). A face
+/// that kept its index holds only vertices of the input face it was (the
+/// split puts a child in its parent's slot), so a candidate's faces are
+/// among its input faces and among the faces the split appended after them.
+struct CandidateFaces {
+  static constexpr std::uint32_t kNone = ~std::uint32_t(0);
+  std::vector<std::uint32_t> slot;
+  std::vector<std::vector<std::uint32_t>> facesOf;
+};
+
+template <class MeshType, class Candidate>
+CandidateFaces facesOfCandidates(const MeshType &m, const FeatureZones &zones,
+                                 std::size_t originalCount, Candidate &&candidate) {
+  constexpr std::uint32_t kNone = CandidateFaces::kNone;
+  const std::size_t firstNew = zones.faceRegion.size();
+  CandidateFaces c;
+  c.slot.assign(originalCount, kNone);
+  for (std::size_t v = 0; v < originalCount; ++v) {
+    if (!candidate(v)) continue;
+    c.slot[v] = std::uint32_t(c.facesOf.size());
+    auto &list = c.facesOf.emplace_back();
+    for (const std::uint32_t *fi = zones.inputFaces.begin(v); fi != zones.inputFaces.end(v); ++fi)
+      for (int k = 0; k < 3; ++k)
+        if (vcg::tri::Index(m, m.face[*fi].cV(k)) == v) list.push_back(*fi);
+  }
+  for (std::size_t fi = firstNew; fi < m.face.size(); ++fi)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t u = vcg::tri::Index(m, m.face[fi].cV(k));
+      if (u < originalCount && c.slot[u] != kNone)
+        c.facesOf[c.slot[u]].push_back(std::uint32_t(fi));
+    }
+  return c;
+}
+
+/// The longest move allowed to v (at p): `factor` x the mean length of the
+/// edges from v to the other corners of `faces` (each edge as often as a
+/// face holds it).
+template <class MeshType>
+double maxProjectionStep(const MeshType &m, const std::vector<std::uint32_t> &faces, std::size_t v,
+                         const Vec3 &p, double factor) {
+  double edgeSum = 0;
+  int edgeCount = 0;
+  for (const std::uint32_t fi : faces)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t u = vcg::tri::Index(m, m.face[fi].cV(k));
+      if (u == v) continue;
+      edgeSum += (positionOf(&m.vert[u]) - p).Norm();
+      ++edgeCount;
+    }
+  return factor * edgeSum / std::max(1, edgeCount);
+}
+
+/// Whether moving v to `target` keeps every face of `faces` facing the same
+/// way and creates no angle below `degenerateAngleRad` that was not there.
+template <class MeshType>
+bool moveKeepsFaces(const MeshType &m, const std::vector<std::uint32_t> &faces, std::size_t v,
+                    const Vec3 &target, double degenerateAngleRad) {
+  for (const std::uint32_t fi : faces) {
+    const auto &f = m.face[fi];
+    Vec3 q[3], r[3];
+    for (int k = 0; k < 3; ++k) {
+      q[k] = positionOf(f.cV(k));
+      r[k] = vcg::tri::Index(m, f.cV(k)) == v ? target : q[k];
+    }
+    const Vec3 before = (q[1] - q[0]) ^ (q[2] - q[0]);
+    const Vec3 after = (r[1] - r[0]) ^ (r[2] - r[0]);
+    const double minBefore = minTriangleAngle(q[0], q[1], q[2]);
+    const double minAfter = minTriangleAngle(r[0], r[1], r[2]);
+    if (!(before * after > 0 && (minAfter >= degenerateAngleRad || minAfter >= minBefore)))
+      return false;
+  }
+  return true;
+}
+
+}  // namespace detail
+
 /// Moves each labelled zone vertex (an original vertex outside every region)
 /// that borders a sharpened edge (`nearSharpEdge`) onto its region's plane,
 /// the surface it samples: marching cubes and similar samplers leave such
@@ -787,68 +993,23 @@ std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::siz
                                 const std::vector<char> &nearSharpEdge, const SharpenOptions &opt,
                                 ExtendedStats &stats) {
   using Scalar = typename MeshType::ScalarType;
-  const auto candidate = [&](std::size_t v) {
-    return !zones.inRegion[v] && zones.vertexLabel[v] >= 0 && nearSharpEdge[v];
-  };
-  // The candidates' faces after the split, in increasing order. A face that
-  // kept its index holds only vertices of the input face it was (the split
-  // puts a child in its parent's slot), so a candidate's faces are among its
-  // input faces and among the faces the split appended after them.
-  constexpr std::uint32_t kNone = ~std::uint32_t(0);
-  const std::size_t firstNew = zones.faceRegion.size();
-  std::vector<std::uint32_t> slot(originalCount, kNone);
-  std::vector<std::vector<std::uint32_t>> facesOf;
-  for (std::size_t v = 0; v < originalCount; ++v) {
-    if (!candidate(v)) continue;
-    slot[v] = std::uint32_t(facesOf.size());
-    auto &list = facesOf.emplace_back();
-    for (const std::uint32_t *fi = zones.inputFaces.begin(v); fi != zones.inputFaces.end(v); ++fi)
-      for (int k = 0; k < 3; ++k)
-        if (vcg::tri::Index(m, m.face[*fi].cV(k)) == v) list.push_back(*fi);
-  }
-  for (std::size_t fi = firstNew; fi < m.face.size(); ++fi)
-    for (int k = 0; k < 3; ++k) {
-      const std::size_t u = vcg::tri::Index(m, m.face[fi].cV(k));
-      if (u < originalCount && slot[u] != kNone) facesOf[slot[u]].push_back(std::uint32_t(fi));
-    }
+  const detail::CandidateFaces candidates =
+      detail::facesOfCandidates(m, zones, originalCount, [&](std::size_t v) {
+        return !zones.inRegion[v] && zones.vertexLabel[v] >= 0 && nearSharpEdge[v];
+      });
   std::size_t moved = 0;
   for (std::size_t v = 0; v < originalCount; ++v) {
-    if (slot[v] == kNone || facesOf[slot[v]].empty()) continue;
-    const std::vector<std::uint32_t> &faces = facesOf[slot[v]];
+    const std::uint32_t slot = candidates.slot[v];
+    if (slot == detail::CandidateFaces::kNone || candidates.facesOf[slot].empty()) continue;
+    const std::vector<std::uint32_t> &faces = candidates.facesOf[slot];
     const Plane &pl = zones.support.plane(v);
     const Vec3 p = positionOf(&m.vert[v]);
     const Vec3 target = p - pl.normal * (pl.normal * (p - pl.point));
     const double step = (target - p).Norm();
     // A move below the mesh's float resolution changes nothing: not counted.
     if (vcg::Point3<Scalar>::Construct(target) == m.vert[v].cP()) continue;
-    double edgeSum = 0;
-    int edgeCount = 0;
-    for (const std::uint32_t fi : faces)
-      for (int k = 0; k < 3; ++k) {
-        const std::size_t u = vcg::tri::Index(m, m.face[fi].cV(k));
-        if (u == v) continue;
-        edgeSum += (positionOf(&m.vert[u]) - p).Norm();
-        ++edgeCount;
-      }
-    if (step > opt.maxProjectionFactor * edgeSum / std::max(1, edgeCount)) {
-      ++stats.projectionsRejected;
-      continue;
-    }
-    bool ok = true;
-    for (std::size_t i = 0; i < faces.size() && ok; ++i) {
-      const auto &f = m.face[faces[i]];
-      Vec3 q[3], r[3];
-      for (int k = 0; k < 3; ++k) {
-        q[k] = positionOf(f.cV(k));
-        r[k] = vcg::tri::Index(m, f.cV(k)) == v ? target : q[k];
-      }
-      const Vec3 before = (q[1] - q[0]) ^ (q[2] - q[0]);
-      const Vec3 after = (r[1] - r[0]) ^ (r[2] - r[0]);
-      const double minBefore = minTriangleAngle(q[0], q[1], q[2]);
-      const double minAfter = minTriangleAngle(r[0], r[1], r[2]);
-      ok = before * after > 0 && (minAfter >= opt.degenerateAngleRad || minAfter >= minBefore);
-    }
-    if (!ok) {
+    if (step > detail::maxProjectionStep(m, faces, v, p, opt.maxProjectionFactor) ||
+        !detail::moveKeepsFaces(m, faces, v, target, opt.degenerateAngleRad)) {
       ++stats.projectionsRejected;
       continue;
     }
