@@ -72,10 +72,8 @@ void refineExtendedPlacement(MeshType &m, VertexMoves<MeshType> &moves, const Fe
   projectZoneVertices(m, zones, moves.firstInserted(), sourcesOfMovedVertices(moves), opt,
                       report.extended);
   if (!opt.samplingGridGuard) return;
-  report.grid = revertGridContradictions(m, moves.plan(), moves.labels(), zones.samplingGrid,
-                                         moves.originalRest(), opt.gridSweepToleranceCells);
-  revertBlendedFeatures(m, moves.plan(), moves.labels(), zones.support.region,
-                        opt.gridBlendedFeatureFraction, report.grid);
+  report.grid = revertGridContradictions(m, moves, zones.samplingGrid, opt.gridSweepToleranceCells);
+  revertBlendedFeatures(moves, zones.support.region, opt.gridBlendedFeatureFraction, report.grid);
 }
 
 }  // namespace edge_sharpener

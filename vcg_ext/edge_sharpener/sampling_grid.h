@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
@@ -40,6 +41,7 @@
 #include "mesh_labels.h"
 #include "report.h"
 #include "subdivision.h"
+#include "vertex_moves.h"
 
 namespace edge_sharpener {
 
@@ -237,169 +239,292 @@ inline double pointTriangleDistance(const Vec3 &q, const std::array<Vec3, 3> &t)
   return distance;
 }
 
+namespace detail {
+
+/// Hash key of a grid node: 21 bits per lattice index (enough for
+/// SamplingGrid::kMaxLineIndex).
+inline std::uint64_t nodeKey(const std::array<long, 3> &ijk) {
+  return (std::uint64_t(ijk[0] & 0x1fffff) << 42) | (std::uint64_t(ijk[1] & 0x1fffff) << 21) |
+         std::uint64_t(ijk[2] & 0x1fffff);
+}
+
+/// The steps of revertGridContradictions(), sharing what they build: the
+/// moved faces, the input vertices among their corners with their input
+/// normals, and the grid nodes the input's sampling classified.
+template <class MeshType>
+class GridContradictionGuard {
+ public:
+  using VertexType = typename MeshType::VertexType;
+  using FaceType = typename MeshType::FaceType;
+
+  GridContradictionGuard(MeshType &m, VertexMoves<MeshType> &moves, const SamplingGrid &grid,
+                         double tolerance, GridGuardStats &stats)
+      : m_(m),
+        moves_(moves),
+        grid_(grid),
+        tolerance_(tolerance),
+        stats_(stats),
+        slot_(moves.firstInserted(), kNone) {}
+
+  /// Collects the faces with a moved vertex and the input vertices among
+  /// their corners. \return whether any face moved.
+  bool collectMovedFaces() {
+    for (std::size_t fi = 0; fi < m_.face.size(); ++fi) {
+      const FaceType &f = m_.face[fi];
+      if (f.IsD() || !hasMovedVertex(f)) continue;
+      changed_.push_back(std::uint32_t(fi));
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t v = indexOf(f.cV(k));
+        if (isInput(v) && slot_[v] == kNone) {
+          slot_[v] = std::uint32_t(sampled_.size());
+          sampled_.push_back(std::uint32_t(v));
+        }
+      }
+    }
+    return !changed_.empty();
+  }
+
+  /// The collected input vertices' normals in the input: the split keeps
+  /// each face's area and normal in its children, so the faces around a
+  /// vertex at rest sum to the input's.
+  void sumInputNormals() {
+    normal_.assign(sampled_.size(), Vec3(0, 0, 0));
+    for (const FaceType &f : m_.face) {
+      if (f.IsD()) continue;
+      std::size_t vi[3];
+      bool wanted = false;
+      for (int k = 0; k < 3; ++k) {
+        vi[k] = indexOf(f.cV(k));
+        wanted = wanted || isSampled(vi[k]);
+      }
+      if (!wanted) continue;
+      const Vec3 p0 = moves_.exactRest(vi[0]), p1 = moves_.exactRest(vi[1]),
+                 p2 = moves_.exactRest(vi[2]);
+      const Vec3 n = (p1 - p0) ^ (p2 - p0);
+      for (int k = 0; k < 3; ++k)
+        if (isSampled(vi[k])) normal_[slot_[vi[k]]] += n;
+    }
+  }
+
+  /// The two nodes bracketing each collected vertex on its grid edge: the
+  /// one its normal points to is outside, the other inside (0: seen both
+  /// ways). Only the nodes witness: marching cubes knows their side exactly,
+  /// while it interpolates where the surface crosses the edge (near a sharp
+  /// edge, a tenth of a cell off).
+  void classifyNodes() {
+    for (std::size_t s = 0; s < sampled_.size(); ++s) {
+      const Vec3 p = moves_.exactRest(sampled_[s]);
+      const int a = grid_.edgeAxis(p);
+      const Vec3 &n = normal_[s];
+      if (a < 0 || !(std::abs(n[a]) > 0.2 * n.Norm())) continue;
+      std::array<long, 3> lo{};
+      bool inRange = true;
+      for (int k = 0; k < 3; ++k)
+        inRange = inRange && (k == a ? grid_.lineIndex(k, p[k], false, lo[k])
+                                     : grid_.lineIndex(k, p[k] + 0.5 * grid_.axis[k].step, false,
+                                                       lo[k]));  // the nearest line
+      if (!inRange) continue;
+      std::array<long, 3> hi = lo;
+      hi[a] += 1;
+      const int loSide = n[a] > 0 ? -1 : 1;
+      for (const auto &[ijk, nodeSide] : {std::pair{lo, loSide}, std::pair{hi, -loSide}}) {
+        const auto [it, added] = side_.emplace(nodeKey(ijk), nodeSide);
+        if (!added && it->second != nodeSide) it->second = 0;
+      }
+    }
+  }
+
+  /// Sends back the moved vertices of every face that sweeps a classified
+  /// node, round after round, until none does (at rest, none does).
+  void sendBackSweepingFaces() {
+    constexpr int kMaxRounds = 8;
+    std::vector<std::size_t> back;
+    for (int round = 0; round < kMaxRounds; ++round) {
+      back.clear();
+      collectSweepingVertices(round == 0, back);
+      if (back.empty()) break;
+      ++stats_.rounds;
+      std::sort(back.begin(), back.end());
+      back.erase(std::unique(back.begin(), back.end()), back.end());
+      for (const std::size_t v : back) sendBack(v);
+    }
+  }
+
+ private:
+  static constexpr std::uint32_t kNone = ~std::uint32_t(0);
+  /// Lines per axis beyond which the box of a motion is not searched (a
+  /// face spans a cell or two).
+  static constexpr long kMaxNodesPerAxis = 8;
+
+  std::size_t indexOf(const VertexType *v) const { return std::size_t(vcg::tri::Index(m_, v)); }
+  bool isInput(std::size_t v) const { return v < moves_.firstInserted(); }
+  bool isSampled(std::size_t v) const { return isInput(v) && slot_[v] != kNone; }
+  bool hasMovedVertex(const FaceType &f) const {
+    return moves_.isMoved(indexOf(f.cV(0))) || moves_.isMoved(indexOf(f.cV(1))) ||
+           moves_.isMoved(indexOf(f.cV(2)));
+  }
+
+  /// Appends to `back` the moved vertices of the moved faces that sweep a
+  /// classified node; drops the faces no longer moved. `firstRound`: counts
+  /// the nodes tested and the sweeping faces.
+  void collectSweepingVertices(bool firstRound, std::vector<std::size_t> &back) {
+    std::size_t kept = 0;
+    for (const std::uint32_t fi : changed_) {
+      const FaceType &f = m_.face[fi];
+      if (!hasMovedVertex(f)) continue;
+      changed_[kept++] = fi;
+      std::array<Vec3, 3> before, after;
+      for (int k = 0; k < 3; ++k) {
+        before[k] = moves_.exactRest(indexOf(f.cV(k)));
+        after[k] = positionOf(f.cV(k));
+      }
+      if (!sweepsClassifiedNode(before, after, firstRound)) continue;
+      stats_.sweepingFaces += firstRound;
+      for (int k = 0; k < 3; ++k)
+        if (moves_.isMoved(indexOf(f.cV(k)))) back.push_back(indexOf(f.cV(k)));
+    }
+    changed_.resize(kept);
+  }
+
+  /// The lattice box [from, to] of the nodes a motion may sweep; false when
+  /// it is out of range or too large to search.
+  bool motionBox(const std::array<Vec3, 3> &before, const std::array<Vec3, 3> &after,
+                 std::array<long, 3> &from, std::array<long, 3> &to) const {
+    for (int a = 0; a < 3; ++a) {
+      double lo = before[0][a], hi = lo;
+      for (int k = 0; k < 3; ++k)
+        lo = std::min({lo, before[k][a], after[k][a]}),
+        hi = std::max({hi, before[k][a], after[k][a]});
+      if (!(grid_.lineIndex(a, lo, true, from[a]) && grid_.lineIndex(a, hi, false, to[a]) &&
+            to[a] - from[a] < kMaxNodesPerAxis))
+        return false;
+    }
+    return true;
+  }
+
+  /// Whether the face moving from `before` to `after` swept over a
+  /// classified node that ends more than the tolerance past it.
+  bool sweepsClassifiedNode(const std::array<Vec3, 3> &before, const std::array<Vec3, 3> &after,
+                            bool countTests) {
+    std::array<long, 3> from{}, to{};
+    if (!motionBox(before, after, from, to)) return false;
+    std::array<long, 3> ijk{};
+    for (ijk[0] = from[0]; ijk[0] <= to[0]; ++ijk[0])
+      for (ijk[1] = from[1]; ijk[1] <= to[1]; ++ijk[1])
+        for (ijk[2] = from[2]; ijk[2] <= to[2]; ++ijk[2]) {
+          const auto it = side_.find(nodeKey(ijk));
+          if (it == side_.end() || it->second == 0) continue;
+          const Vec3 q = grid_.node(ijk);
+          stats_.nodesTested += countTests;
+          if (inSweptPrism(q, before, after) && pointTriangleDistance(q, after) > tolerance_)
+            return true;
+        }
+    return false;
+  }
+
+  /// Puts v back at rest (the exact rest rounded as the mesh stores it).
+  void sendBack(std::size_t v) {
+    assert(MeshType::CoordType::Construct(moves_.exactRest(v)) == moves_.storedRest(v));
+    moves_.sendBack(v, Placement::GridRevert);
+    if (isInput(v))
+      ++stats_.zoneReverted;
+    else
+      ++stats_.reverted;
+  }
+
+  MeshType &m_;
+  VertexMoves<MeshType> &moves_;
+  const SamplingGrid &grid_;
+  const double tolerance_;
+  GridGuardStats &stats_;
+  std::vector<std::uint32_t> changed_;           ///< faces with a moved vertex
+  std::vector<std::uint32_t> slot_;              ///< input vertex -> index in sampled_, or kNone
+  std::vector<std::uint32_t> sampled_;           ///< input vertices of the moved faces
+  std::vector<Vec3> normal_;                     ///< their normals in the input
+  std::unordered_map<std::uint64_t, int> side_;  ///< node -> -1 inside, 1 outside, 0 both
+};
+
+}  // namespace detail
+
 /// Stage 5b (extended method, inputs sampled on a grid): sends back to rest
-/// every moved vertex of a face whose motion swept over a grid node that the
-/// input's sampling classified (a node bracketing one of the face's input
-/// vertices on its grid edge) by more than `toleranceSteps` cells past the
-/// moved face. Repeats until no face sweeps a node (at rest, none does).
-/// A moved vertex is an inserted vertex with Placement::Moved (rest:
-/// plan.inserted[k].rest) or an original vertex away from `originalRest`
-/// (a projected zone vertex). Deterministic: serial, in face order.
+/// every moved vertex (moves.isMoved: an inserted vertex placed on its
+/// planes, or a projected zone vertex) of a face whose motion swept over a
+/// grid node that the input's sampling classified (a node bracketing one of
+/// the face's input vertices on its grid edge) by more than `toleranceSteps`
+/// cells past the moved face. Repeats until no face sweeps a node (at rest,
+/// none does). Deterministic: serial, in face order.
 /// \pre placement and zone projection ran; subdivide() split the faces and
 ///   nothing else changed the connectivity since; the mesh is compact.
 /// \return the counts; reverted inserted vertices get Placement::GridRevert.
 template <class MeshType>
-GridGuardStats revertGridContradictions(
-    MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels, const SamplingGrid &grid,
-    const std::vector<typename MeshType::CoordType> &originalRest, double toleranceSteps) {
-  using CoordType = typename MeshType::CoordType;
+GridGuardStats revertGridContradictions(MeshType &m, VertexMoves<MeshType> &moves,
+                                        const SamplingGrid &grid, double toleranceSteps) {
   GridGuardStats stats;
   stats.gridFound = grid.found;
   if (!grid.found) return stats;
   stats.step = grid.minStep();
-  const std::size_t n0 = plan.originalVertexCount;
-  const auto index = [&](const typename MeshType::VertexType *v) {
-    return std::size_t(vcg::tri::Index(m, v));
-  };
-  const auto restOf = [&](std::size_t v) -> Vec3 {
-    if (v >= n0) return plan.inserted[v - n0].rest;
-    return v < originalRest.size() ? Vec3::Construct(originalRest[v]) : positionOf(&m.vert[v]);
-  };
-  const auto isMoved = [&](std::size_t v) {
-    if (v >= n0) return labels.placement[&m.vert[v]] == Placement::Moved;
-    return v < originalRest.size() && m.vert[v].cP() != originalRest[v];
-  };
-  const auto hasMovedVertex = [&](const typename MeshType::FaceType &f) {
-    return isMoved(index(f.cV(0))) || isMoved(index(f.cV(1))) || isMoved(index(f.cV(2)));
-  };
-
-  // The faces that moved, and the input vertices among their corners.
-  std::vector<std::uint32_t> changed;
-  constexpr std::uint32_t kNone = ~std::uint32_t(0);
-  std::vector<std::uint32_t> slot(n0, kNone);
-  std::vector<std::uint32_t> sampled;  // input vertices of moved faces
-  for (std::size_t fi = 0; fi < m.face.size(); ++fi) {
-    const auto &f = m.face[fi];
-    if (f.IsD() || !hasMovedVertex(f)) continue;
-    changed.push_back(std::uint32_t(fi));
-    for (int k = 0; k < 3; ++k) {
-      const std::size_t v = index(f.cV(k));
-      if (v < n0 && slot[v] == kNone) {
-        slot[v] = std::uint32_t(sampled.size());
-        sampled.push_back(std::uint32_t(v));
-      }
-    }
-  }
-  if (changed.empty()) return stats;
-  // Their normals in the input: the split keeps each face's area and normal
-  // in its children, so the faces around a vertex at rest sum to the input's.
-  std::vector<Vec3> normal(sampled.size(), Vec3(0, 0, 0));
-  for (const auto &f : m.face) {
-    if (f.IsD()) continue;
-    std::size_t vi[3];
-    bool wanted = false;
-    for (int k = 0; k < 3; ++k) {
-      vi[k] = index(f.cV(k));
-      wanted = wanted || (vi[k] < n0 && slot[vi[k]] != kNone);
-    }
-    if (!wanted) continue;
-    const Vec3 p0 = restOf(vi[0]), p1 = restOf(vi[1]), p2 = restOf(vi[2]);
-    const Vec3 n = (p1 - p0) ^ (p2 - p0);
-    for (int k = 0; k < 3; ++k)
-      if (vi[k] < n0 && slot[vi[k]] != kNone) normal[slot[vi[k]]] += n;
-  }
-  // The two nodes bracketing each such vertex on its grid edge: the one its
-  // normal points to is outside, the other inside (0: seen both ways). Only
-  // the nodes witness: marching cubes knows their side exactly, while it
-  // interpolates where the surface crosses the edge (near a sharp edge, a
-  // tenth of a cell off).
-  const auto key = [](const std::array<long, 3> &ijk) {
-    return (std::uint64_t(ijk[0] & 0x1fffff) << 42) | (std::uint64_t(ijk[1] & 0x1fffff) << 21) |
-           std::uint64_t(ijk[2] & 0x1fffff);
-  };
-  std::unordered_map<std::uint64_t, int> side;
-  for (std::size_t s = 0; s < sampled.size(); ++s) {
-    const Vec3 p = restOf(sampled[s]);
-    const int a = grid.edgeAxis(p);
-    const Vec3 &n = normal[s];
-    if (a < 0 || !(std::abs(n[a]) > 0.2 * n.Norm())) continue;
-    std::array<long, 3> lo{};
-    bool inRange = true;
-    for (int k = 0; k < 3; ++k)
-      inRange = inRange && (k == a ? grid.lineIndex(k, p[k], false, lo[k])
-                                   : grid.lineIndex(k, p[k] + 0.5 * grid.axis[k].step, false,
-                                                    lo[k]));  // the nearest line
-    if (!inRange) continue;
-    std::array<long, 3> hi = lo;
-    hi[a] += 1;
-    const int loSide = n[a] > 0 ? -1 : 1;
-    for (const auto &[ijk, nodeSide] : {std::pair{lo, loSide}, std::pair{hi, -loSide}}) {
-      const auto [it, added] = side.emplace(key(ijk), nodeSide);
-      if (!added && it->second != nodeSide) it->second = 0;
-    }
-  }
-
-  const double tolerance = toleranceSteps * stats.step;
-  std::vector<std::size_t> back;
-  for (int round = 0; round < 8; ++round) {
-    back.clear();
-    std::size_t kept = 0;
-    for (const std::uint32_t fi : changed) {
-      const auto &f = m.face[fi];
-      if (!hasMovedVertex(f)) continue;
-      changed[kept++] = fi;
-      std::array<Vec3, 3> before, after;
-      for (int k = 0; k < 3; ++k) {
-        before[k] = restOf(index(f.cV(k)));
-        after[k] = positionOf(f.cV(k));
-      }
-      // The nodes in the box of the motion (a face spans a cell or two; a
-      // box of more than kMaxNodesPerAxis lines per axis is not searched).
-      constexpr long kMaxNodesPerAxis = 8;
-      std::array<long, 3> from{}, to{};
-      bool searchable = true;
-      for (int a = 0; a < 3 && searchable; ++a) {
-        double lo = before[0][a], hi = lo;
-        for (int k = 0; k < 3; ++k)
-          lo = std::min({lo, before[k][a], after[k][a]}),
-          hi = std::max({hi, before[k][a], after[k][a]});
-        searchable = grid.lineIndex(a, lo, true, from[a]) && grid.lineIndex(a, hi, false, to[a]) &&
-                     to[a] - from[a] < kMaxNodesPerAxis;
-      }
-      if (!searchable) continue;
-      bool swept = false;
-      std::array<long, 3> ijk{};
-      for (ijk[0] = from[0]; ijk[0] <= to[0] && !swept; ++ijk[0])
-        for (ijk[1] = from[1]; ijk[1] <= to[1] && !swept; ++ijk[1])
-          for (ijk[2] = from[2]; ijk[2] <= to[2] && !swept; ++ijk[2]) {
-            const auto it = side.find(key(ijk));
-            if (it == side.end() || it->second == 0) continue;
-            const Vec3 q = grid.node(ijk);
-            stats.nodesTested += round == 0;
-            swept = inSweptPrism(q, before, after) && pointTriangleDistance(q, after) > tolerance;
-          }
-      if (!swept) continue;
-      stats.sweepingFaces += round == 0;
-      for (int k = 0; k < 3; ++k)
-        if (isMoved(index(f.cV(k)))) back.push_back(index(f.cV(k)));
-    }
-    changed.resize(kept);
-    if (back.empty()) break;
-    ++stats.rounds;
-    std::sort(back.begin(), back.end());
-    back.erase(std::unique(back.begin(), back.end()), back.end());
-    for (const std::size_t v : back) {
-      m.vert[v].P() = CoordType::Construct(restOf(v));  // as placed at rest
-      if (v >= n0) {
-        labels.placement[&m.vert[v]] = Placement::GridRevert;
-        ++stats.reverted;
-      } else {
-        ++stats.zoneReverted;
-      }
-    }
-  }
+  detail::GridContradictionGuard<MeshType> guard(m, moves, grid, toleranceSteps * stats.step,
+                                                 stats);
+  if (!guard.collectMovedFaces()) return stats;
+  guard.sumInputNormals();
+  guard.classifyNodes();
+  guard.sendBackSweepingFaces();
   return stats;
 }
+
+namespace detail {
+
+/// Key of the pair of regions between sources i and j of an inserted vertex,
+/// or kNoRegionPair (a source without a plane, or both in one region: an
+/// internal crease, its own feature).
+constexpr std::uint64_t kNoRegionPair = ~std::uint64_t(0);
+inline std::uint64_t regionPairKey(const std::vector<int> &regionOf,
+                                   const InsertedVertexSource &src, int i, int j) {
+  const int a = regionOf[src.original[i]], b = regionOf[src.original[j]];
+  if (a < 0 || b < 0 || a == b) return kNoRegionPair;
+  return (std::uint64_t(std::min(a, b)) << 32) | std::uint64_t(std::max(a, b));
+}
+
+/// Per pair of regions: the chamfer-edge vertices moved between them, how
+/// many of those the grid sent back, and whether the feature is blended.
+struct FeatureTally {
+  std::size_t moves = 0, reverted = 0;
+  bool blended = false;
+};
+using FeatureTallies = std::unordered_map<std::uint64_t, FeatureTally>;
+
+/// Tallies the chamfer-edge vertices (two sources) that moved or went back
+/// as GridRevert, by the pair of regions they lie between.
+template <class MeshType>
+FeatureTallies tallyFeatureMoves(VertexMoves<MeshType> &moves, const std::vector<int> &regionOf) {
+  FeatureTallies tally;
+  const SplitPlan &plan = moves.plan();
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+    const InsertedVertexSource &src = plan.inserted[k];
+    const Placement p = moves.labels().placement[moves.firstInserted() + k];
+    if (src.originalCount != 2 || (p != Placement::Moved && p != Placement::GridRevert)) continue;
+    const std::uint64_t key = regionPairKey(regionOf, src, 0, 1);
+    if (key == kNoRegionPair) continue;
+    FeatureTally &t = tally[key];
+    ++t.moves;
+    t.reverted += p == Placement::GridRevert;
+  }
+  return tally;
+}
+
+/// Whether an inserted vertex lies between two regions whose feature is
+/// blended (corners: any two of their three regions).
+inline bool betweenBlendedRegions(const FeatureTallies &tally, const std::vector<int> &regionOf,
+                                  const InsertedVertexSource &src) {
+  for (int i = 0; i < src.originalCount; ++i)
+    for (int j = i + 1; j < src.originalCount; ++j) {
+      const auto it = tally.find(regionPairKey(regionOf, src, i, j));
+      if (it != tally.end() && it->second.blended) return true;
+    }
+  return false;
+}
+
+}  // namespace detail
 
 /// Stage 5b, second step: a feature between two regions is blended or sharp
 /// along its whole length, while the grid nodes witness only where they
@@ -413,55 +538,21 @@ GridGuardStats revertGridContradictions(
 /// Counts into `stats`: the blended pairs (blendedFeatures), and the
 /// vertices it sends back (reverted and featureReverted).
 template <class MeshType>
-void revertBlendedFeatures(MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels,
-                           const std::vector<int> &regionOf, double fraction,
-                           GridGuardStats &stats) {
-  using CoordType = typename MeshType::CoordType;
-  const std::size_t n0 = plan.originalVertexCount;
+void revertBlendedFeatures(VertexMoves<MeshType> &moves, const std::vector<int> &regionOf,
+                           double fraction, GridGuardStats &stats) {
+  const SplitPlan &plan = moves.plan();
+  const std::size_t n0 = moves.firstInserted();
   if (!(fraction > 0) || stats.reverted == 0 || regionOf.size() < n0) return;
-  // The pair of regions an inserted vertex lies between (kNoPair: a source
-  // without a plane, or both in one region: an internal crease, its own
-  // feature).
-  constexpr std::uint64_t kNoPair = ~std::uint64_t(0);
-  const auto pairKey = [&](const InsertedVertexSource &src, int i, int j) {
-    const int a = regionOf[src.original[i]], b = regionOf[src.original[j]];
-    if (a < 0 || b < 0 || a == b) return kNoPair;
-    return (std::uint64_t(std::min(a, b)) << 32) | std::uint64_t(std::max(a, b));
-  };
-  struct Tally {
-    std::size_t moves = 0, reverted = 0;
-    bool blended = false;
-  };
-  std::unordered_map<std::uint64_t, Tally> tally;  // chamfer-edge vertices per pair
-  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
-    const InsertedVertexSource &src = plan.inserted[k];
-    const Placement p = labels.placement[&m.vert[n0 + k]];
-    if (src.originalCount != 2 || (p != Placement::Moved && p != Placement::GridRevert)) continue;
-    const std::uint64_t key = pairKey(src, 0, 1);
-    if (key == kNoPair) continue;
-    Tally &t = tally[key];
-    ++t.moves;
-    t.reverted += p == Placement::GridRevert;
-  }
+  detail::FeatureTallies tally = detail::tallyFeatureMoves(moves, regionOf);
   for (auto &entry : tally) {
-    Tally &t = entry.second;
+    detail::FeatureTally &t = entry.second;
     t.blended = t.reverted > 0 && double(t.reverted) >= fraction * double(t.moves);
     stats.blendedFeatures += t.blended;
   }
-  const auto isBlended = [&](std::uint64_t key) {
-    const auto it = tally.find(key);
-    return it != tally.end() && it->second.blended;
-  };
   for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
-    auto &v = m.vert[n0 + k];
-    if (labels.placement[&v] != Placement::Moved) continue;
-    const InsertedVertexSource &src = plan.inserted[k];
-    bool back = false;
-    for (int i = 0; i < src.originalCount; ++i)
-      for (int j = i + 1; j < src.originalCount; ++j) back = back || isBlended(pairKey(src, i, j));
-    if (!back) continue;
-    v.P() = CoordType::Construct(src.rest);
-    labels.placement[&v] = Placement::GridRevert;
+    if (moves.labels().placement[n0 + k] != Placement::Moved) continue;
+    if (!detail::betweenBlendedRegions(tally, regionOf, plan.inserted[k])) continue;
+    moves.sendBack(n0 + k, Placement::GridRevert);
     ++stats.reverted;
     ++stats.featureReverted;
   }

@@ -160,16 +160,12 @@ struct OldAdjacency {
   std::array<int, 3> edge;
 };
 
-/// Face-face adjacency after the split, updated locally: only the children
-/// and the unsplit faces across the parents' unsplit edges change. Gives what
-/// a full rebuild gives, since the mesh is 2-manifold (its edges have at most
-/// two faces); falls back to a full rebuild (fast_topology.h) otherwise.
-template <class MeshType>
-void updateSplitAdjacency(MeshType &m, const SplitPlan &plan,
-                          const std::vector<std::vector<std::array<std::size_t, 3>>> &children,
-                          const std::vector<std::array<std::size_t, 3>> &parentVertices,
-                          const std::vector<OldAdjacency> &old, std::size_t firstNew) {
-  std::vector<char> split(m.face.size(), 0);
+/// Every edge of every child (sorted by its vertex pair), child 0 in its
+/// parent's slot and the others from `firstNew` on; marks the parents in
+/// `split`.
+inline std::vector<ChildEdge> collectChildEdges(
+    const SplitPlan &plan, const std::vector<std::vector<std::array<std::size_t, 3>>> &children,
+    std::size_t firstNew, std::vector<char> &split) {
   std::vector<ChildEdge> edges;
   std::size_t next = firstNew;
   for (std::size_t k = 0; k < plan.faces.size(); ++k) {
@@ -182,16 +178,37 @@ void updateSplitAdjacency(MeshType &m, const SplitPlan &plan,
     }
   }
   std::sort(edges.begin(), edges.end());
-  // Child k's parent: to find the parent edge an unpaired child edge lies on.
-  std::vector<std::size_t> parentOf(m.face.size() - firstNew + 1);
-  next = firstNew;
-  for (std::size_t k = 0; k < plan.faces.size(); ++k)
-    for (std::size_t c = 1; c < children[k].size(); ++c) parentOf[next++ - firstNew] = k;
-  // Face index -> k, for the parents (32 bits: a full-size array).
-  std::vector<std::uint32_t> splitIndex(firstNew, 0);
-  for (std::size_t k = 0; k < plan.faces.size(); ++k)
-    splitIndex[plan.faces[k].face] = std::uint32_t(k);
+  return edges;
+}
 
+/// Per face index: the plan entry k of the parent it is a child of, for
+/// the parents themselves ([0, firstNew), 0 elsewhere) and for the appended
+/// children (from firstNew on; an unpaired child edge lies on an edge of it).
+inline std::vector<std::uint32_t> parentEntries(
+    const SplitPlan &plan, const std::vector<std::vector<std::array<std::size_t, 3>>> &children,
+    std::size_t faceCount, std::size_t firstNew) {
+  // 32 bits: a full-size array.
+  std::vector<std::uint32_t> entry(faceCount + 1, 0);
+  for (std::size_t k = 0; k < plan.faces.size(); ++k) entry[plan.faces[k].face] = std::uint32_t(k);
+  std::size_t next = firstNew;
+  for (std::size_t k = 0; k < plan.faces.size(); ++k)
+    for (std::size_t c = 1; c < children[k].size(); ++c) entry[next++] = std::uint32_t(k);
+  return entry;
+}
+
+/// Face-face adjacency after the split, updated locally: only the children
+/// and the unsplit faces across the parents' unsplit edges change. Gives what
+/// a full rebuild gives, since the mesh is 2-manifold (its edges have at most
+/// two faces); falls back to a full rebuild (fast_topology.h) otherwise.
+template <class MeshType>
+void updateSplitAdjacency(MeshType &m, const SplitPlan &plan,
+                          const std::vector<std::vector<std::array<std::size_t, 3>>> &children,
+                          const std::vector<std::array<std::size_t, 3>> &parentVertices,
+                          const std::vector<OldAdjacency> &old, std::size_t firstNew) {
+  std::vector<char> split(m.face.size(), 0);
+  const std::vector<ChildEdge> edges = collectChildEdges(plan, children, firstNew, split);
+  const std::vector<std::uint32_t> parentOf =
+      parentEntries(plan, children, m.face.size(), firstNew);
   auto link = [&](std::size_t f, int i, std::size_t g, int j) {
     m.face[f].FFp(i) = &m.face[g];
     m.face[f].FFi(i) = char(j);
@@ -212,7 +229,7 @@ void updateSplitAdjacency(MeshType &m, const SplitPlan &plan,
     } else {
       // Unpaired: an unsplit edge of the parent (its old neighbour is not
       // split, else that neighbour's child would pair it), or a boundary.
-      const std::size_t k = a.face < firstNew ? splitIndex[a.face] : parentOf[a.face - firstNew];
+      const std::size_t k = parentOf[a.face];
       const auto &v = parentVertices[k];
       link(a.face, a.edge, a.face, a.edge);
       for (int i = 0; i < 3; ++i) {

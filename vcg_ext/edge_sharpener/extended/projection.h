@@ -1,0 +1,138 @@
+// Extended method, after placement: the zone vertices beside a sharpened
+// edge moved onto their region's plane.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "../geometry.h"
+#include "../options.h"
+#include "../report.h"
+#include "zones.h"
+
+namespace edge_sharpener {
+
+namespace detail {
+
+/// The faces after the split of each original vertex v with `candidate(v)`,
+/// in increasing order: facesOf[slot[v]] (slot kNone for the others). A face
+/// that kept its index holds only vertices of the input face it was (the
+/// split puts a child in its parent's slot), so a candidate's faces are
+/// among its input faces and among the faces the split appended after them.
+struct CandidateFaces {
+  static constexpr std::uint32_t kNone = ~std::uint32_t(0);
+  std::vector<std::uint32_t> slot;
+  std::vector<std::vector<std::uint32_t>> facesOf;
+};
+
+template <class MeshType, class Candidate>
+CandidateFaces facesOfCandidates(const MeshType &m, const FeatureZones &zones,
+                                 std::size_t originalCount, Candidate &&candidate) {
+  constexpr std::uint32_t kNone = CandidateFaces::kNone;
+  const std::size_t firstNew = zones.faceRegion.size();
+  CandidateFaces c;
+  c.slot.assign(originalCount, kNone);
+  for (std::size_t v = 0; v < originalCount; ++v) {
+    if (!candidate(v)) continue;
+    c.slot[v] = std::uint32_t(c.facesOf.size());
+    auto &list = c.facesOf.emplace_back();
+    for (const std::uint32_t *fi = zones.inputFaces.begin(v); fi != zones.inputFaces.end(v); ++fi)
+      for (int k = 0; k < 3; ++k)
+        if (vcg::tri::Index(m, m.face[*fi].cV(k)) == v) list.push_back(*fi);
+  }
+  for (std::size_t fi = firstNew; fi < m.face.size(); ++fi)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t u = vcg::tri::Index(m, m.face[fi].cV(k));
+      if (u < originalCount && c.slot[u] != kNone)
+        c.facesOf[c.slot[u]].push_back(std::uint32_t(fi));
+    }
+  return c;
+}
+
+/// The longest move allowed to v (at p): `factor` x the mean length of the
+/// edges from v to the other corners of `faces` (each edge as often as a
+/// face holds it).
+template <class MeshType>
+double maxProjectionStep(const MeshType &m, const std::vector<std::uint32_t> &faces, std::size_t v,
+                         const Vec3 &p, double factor) {
+  double edgeSum = 0;
+  int edgeCount = 0;
+  for (const std::uint32_t fi : faces)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t u = vcg::tri::Index(m, m.face[fi].cV(k));
+      if (u == v) continue;
+      edgeSum += (positionOf(&m.vert[u]) - p).Norm();
+      ++edgeCount;
+    }
+  return factor * edgeSum / std::max(1, edgeCount);
+}
+
+/// Whether moving v to `target` keeps every face of `faces` facing the same
+/// way and creates no angle below `degenerateAngleRad` that was not there.
+template <class MeshType>
+bool moveKeepsFaces(const MeshType &m, const std::vector<std::uint32_t> &faces, std::size_t v,
+                    const Vec3 &target, double degenerateAngleRad) {
+  for (const std::uint32_t fi : faces) {
+    const auto &f = m.face[fi];
+    Vec3 q[3], r[3];
+    for (int k = 0; k < 3; ++k) {
+      q[k] = positionOf(f.cV(k));
+      r[k] = vcg::tri::Index(m, f.cV(k)) == v ? target : q[k];
+    }
+    const Vec3 before = (q[1] - q[0]) ^ (q[2] - q[0]);
+    const Vec3 after = (r[1] - r[0]) ^ (r[2] - r[0]);
+    const double minBefore = minTriangleAngle(q[0], q[1], q[2]);
+    const double minAfter = minTriangleAngle(r[0], r[1], r[2]);
+    if (!(before * after > 0 && (minAfter >= degenerateAngleRad || minAfter >= minBefore)))
+      return false;
+  }
+  return true;
+}
+
+}  // namespace detail
+
+/// Moves each labelled zone vertex (an original vertex outside every region)
+/// that borders a sharpened edge (`nearSharpEdge`) onto its region's plane,
+/// the surface it samples: marching cubes and similar samplers leave such
+/// vertices on the rounded band. A move longer
+/// than `opt.maxProjectionFactor` x the vertex's mean edge length, or one
+/// that would flip an incident face or create an angle below the
+/// degenerate threshold, is not made. Region vertices never move.
+/// \pre the mesh is the one detection labelled (zones.inputFaces), split by
+/// subdivide() and changed by nothing else since.
+/// \return the number of vertices moved.
+template <class MeshType>
+std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::size_t originalCount,
+                                const std::vector<char> &nearSharpEdge, const SharpenOptions &opt,
+                                ExtendedStats &stats) {
+  using Scalar = typename MeshType::ScalarType;
+  const detail::CandidateFaces candidates =
+      detail::facesOfCandidates(m, zones, originalCount, [&](std::size_t v) {
+        return !zones.inRegion[v] && zones.vertexLabel[v] >= 0 && nearSharpEdge[v];
+      });
+  std::size_t moved = 0;
+  for (std::size_t v = 0; v < originalCount; ++v) {
+    const std::uint32_t slot = candidates.slot[v];
+    if (slot == detail::CandidateFaces::kNone || candidates.facesOf[slot].empty()) continue;
+    const std::vector<std::uint32_t> &faces = candidates.facesOf[slot];
+    const Plane &pl = zones.support.plane(v);
+    const Vec3 p = positionOf(&m.vert[v]);
+    const Vec3 target = p - pl.normal * (pl.normal * (p - pl.point));
+    const double step = (target - p).Norm();
+    // A move below the mesh's float resolution changes nothing: not counted.
+    if (vcg::Point3<Scalar>::Construct(target) == m.vert[v].cP()) continue;
+    if (step > detail::maxProjectionStep(m, faces, v, p, opt.maxProjectionFactor) ||
+        !detail::moveKeepsFaces(m, faces, v, target, opt.degenerateAngleRad)) {
+      ++stats.projectionsRejected;
+      continue;
+    }
+    m.vert[v].P() = vcg::Point3<Scalar>::Construct(target);
+    stats.maxProjection = std::max(stats.maxProjection, step);
+    ++moved;
+  }
+  stats.projectedVertices = moved;
+  return moved;
+}
+
+}  // namespace edge_sharpener
