@@ -12,7 +12,7 @@
 #include <string>
 
 #include "edge_sharpener/mesh_distance.h"
-#include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/util/mesh_types.h"
 #include "mesh_io.h"
 // (vcglib's algorithm headers need complex.h, included above, first)
 #include <vcg/complex/algorithms/closest.h>

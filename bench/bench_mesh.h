@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/util/mesh_types.h"
 #include "test_meshes/shapes.h"
 
 namespace edge_sharpener::bench {

@@ -25,7 +25,7 @@
 
 #include "bench_mesh.h"
 #include "edge_sharpener/edge_sharpener.h"
-#include "edge_sharpener/fast_topology.h"
+#include "edge_sharpener/util/fast_topology.h"
 // (keep after the mesh headers)
 #include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/algorithms/update/topology.h>

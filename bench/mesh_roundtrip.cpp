@@ -6,7 +6,7 @@
 #include <exception>
 
 #include "capacity_hint.h"
-#include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/util/mesh_types.h"
 #include "mesh_io.h"
 
 int main(int argc, char **argv) {

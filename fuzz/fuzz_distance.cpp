@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "edge_sharpener/mesh_distance.h"
-#include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/util/mesh_types.h"
 #include "fuzz_fail.h"
 
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "edge_sharpener/edge_sharpener.h"
-#include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/util/mesh_types.h"
 #include "fuzz_fail.h"
 #include "reliability/invariants.h"
 

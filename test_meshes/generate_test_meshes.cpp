@@ -9,7 +9,7 @@
 #include <vector>
 
 // vcglib's exporter relies on the mesh headers being included first.
-#include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/util/mesh_types.h"
 #include "test_meshes/shapes.h"
 // (keep after the mesh headers)
 #include <wrap/io_trimesh/export_ply.h>

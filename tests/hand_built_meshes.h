@@ -15,8 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "edge_sharpener/geometry.h"
-#include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/util/geometry.h"
+#include "edge_sharpener/util/mesh_types.h"
 
 namespace edge_sharpener {
 namespace hand_built {

@@ -14,8 +14,8 @@
 #endif
 
 #include "edge_sharpener/edge_sharpener.h"
-#include "edge_sharpener/fast_topology.h"
-#include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/util/fast_topology.h"
+#include "edge_sharpener/util/mesh_types.h"
 #include "test_meshes/shapes.h"
 
 namespace es = edge_sharpener;

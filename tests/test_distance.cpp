@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "edge_sharpener/mesh_distance.h"
-#include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/util/mesh_types.h"
 #include "test_meshes/shapes.h"
 // (keep after the mesh headers)
 #include <vcg/complex/algorithms/update/position.h>

@@ -10,7 +10,7 @@
 #include <map>
 #include <set>
 
-#include "edge_sharpener/feature_zones.h"
+#include "edge_sharpener/extended/feature_zones.h"
 #include "edge_sharpener/smooth_edges.h"
 #include "hand_built_meshes.h"
 

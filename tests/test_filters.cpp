@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "edge_sharpener/edge_sharpener.h"
-#include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/util/mesh_types.h"
 #include "test_meshes/shapes.h"
 
 namespace es = edge_sharpener;

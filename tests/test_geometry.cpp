@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "edge_sharpener/geometry.h"
+#include "edge_sharpener/util/geometry.h"
 
 namespace es = edge_sharpener;
 using es::Plane;

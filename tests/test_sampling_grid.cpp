@@ -8,8 +8,8 @@
 #include <random>
 
 #include "edge_sharpener/edge_sharpener.h"
-#include "edge_sharpener/mesh_types.h"
-#include "edge_sharpener/sampling_grid.h"
+#include "edge_sharpener/util/mesh_types.h"
+#include "edge_sharpener/guards/sampling_grid.h"
 #include "test_meshes/shapes.h"
 
 namespace es = edge_sharpener;

@@ -11,7 +11,7 @@
 //       1e-5), same faces; with --colors also the same per-face colours, with
 //       --vertex-colors the same per-vertex colours, with --selection the same
 //       selected faces (both files need the data asked for).
-#include <edge_sharpener/mesh_types.h>
+#include <edge_sharpener/util/mesh_types.h>
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/color.h>
 #include <vcg/complex/algorithms/update/flag.h>

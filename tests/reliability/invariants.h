@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/util/mesh_types.h"
 #include "edge_sharpener/report.h"
 
 namespace es_reliability {

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "edge_sharpener/edge_sharpener.h"
-#include "edge_sharpener/mesh_types.h"
+#include "edge_sharpener/util/mesh_types.h"
 #include "mesh_io.h"
 #include "reliability/invariants.h"
 

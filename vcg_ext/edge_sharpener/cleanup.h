@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "subdivision.h"
-#include "vertex_moves.h"
+#include "guards/vertex_moves.h"
 
 namespace edge_sharpener {
 
@@ -164,7 +164,6 @@ bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan
 template <class MeshType>
 bool flipCap(typename MeshType::FaceType &f, MeshLabels<MeshType> &labels) {
   using FaceType = typename MeshType::FaceType;
-  using Pos = vcg::face::Pos<FaceType>;
   const int z = detail::longestEdgeIndex(f);
   FaceType *g = f.FFp(z);
   if (g == &f || !detail::isSplitChild(labels.face[g])) return false;

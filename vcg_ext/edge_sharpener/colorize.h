@@ -7,7 +7,7 @@
 
 #include <vcg/space/color4.h>
 
-#include "mesh_labels.h"
+#include "util/mesh_labels.h"
 
 namespace edge_sharpener {
 

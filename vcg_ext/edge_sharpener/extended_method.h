@@ -4,11 +4,11 @@
 // paper's placement (zone projection, the opt-in sampling-grid guard).
 #pragma once
 
-#include "feature_zones.h"
+#include "extended/feature_zones.h"
 #include "options.h"
 #include "report.h"
-#include "sampling_grid.h"
-#include "vertex_moves.h"
+#include "guards/sampling_grid.h"
+#include "guards/vertex_moves.h"
 
 namespace edge_sharpener {
 

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "fast_topology.h"
-#include "mesh_labels.h"
+#include "util/fast_topology.h"
+#include "util/mesh_labels.h"
 #include "report.h"
 
 namespace edge_sharpener {

@@ -8,8 +8,8 @@
 #include <memory>
 #include <vector>
 
-#include "fast_topology.h"
-#include "mesh_labels.h"
+#include "util/fast_topology.h"
+#include "util/mesh_labels.h"
 #include "report.h"
 
 namespace edge_sharpener {

@@ -10,8 +10,8 @@
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
-#include "fast_topology.h"
-#include "mesh_labels.h"
+#include "util/fast_topology.h"
+#include "util/mesh_labels.h"
 #include "report.h"
 
 namespace edge_sharpener {

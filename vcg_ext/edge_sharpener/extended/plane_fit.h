@@ -9,9 +9,9 @@
 #include <cstring>
 #include <vector>
 
-#include "../geometry.h"
+#include "../util/geometry.h"
 #include "../options.h"
-#include "../parallel.h"
+#include "../util/parallel.h"
 #include "zones.h"
 
 namespace edge_sharpener {

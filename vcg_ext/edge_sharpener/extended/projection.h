@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "../geometry.h"
+#include "../util/geometry.h"
 #include "../options.h"
 #include "../report.h"
 #include "zones.h"

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "../filters.h"
-#include "../mesh_labels.h"
+#include "../util/mesh_labels.h"
 #include "../options.h"
-#include "../parallel.h"
+#include "../util/parallel.h"
 #include "../report.h"
 #include "plane_fit.h"
 #include "zones.h"

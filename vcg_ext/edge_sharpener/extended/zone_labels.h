@@ -9,9 +9,9 @@
 #include <limits>
 #include <vector>
 
-#include "../mesh_labels.h"
+#include "../util/mesh_labels.h"
 #include "../options.h"
-#include "../parallel.h"
+#include "../util/parallel.h"
 #include "../report.h"
 #include "plane_fit.h"
 #include "zones.h"

@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "../geometry.h"
+#include "../util/geometry.h"
 #include "../placement.h"
-#include "../sampling_grid.h"
-#include "../vertex_faces.h"
+#include "../guards/sampling_grid.h"
+#include "../util/vertex_faces.h"
 
 namespace edge_sharpener {
 

@@ -26,11 +26,11 @@
 
 #include "box_hash_grid.h"
 #include "face_contact.h"
-#include "mesh_labels.h"
-#include "options.h"
-#include "parallel.h"
-#include "report.h"
-#include "subdivision.h"
+#include "../util/mesh_labels.h"
+#include "../options.h"
+#include "../util/parallel.h"
+#include "../report.h"
+#include "../subdivision.h"
 #include "vertex_moves.h"
 
 namespace edge_sharpener {

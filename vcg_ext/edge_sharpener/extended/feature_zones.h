@@ -21,8 +21,8 @@
 // planes, after placement); zones.h holds the state they share.
 #pragma once
 
-#include "extended/plane_fit.h"
-#include "extended/projection.h"
-#include "extended/segmentation.h"
-#include "extended/zone_labels.h"
-#include "extended/zones.h"
+#include "plane_fit.h"
+#include "projection.h"
+#include "segmentation.h"
+#include "zone_labels.h"
+#include "zones.h"

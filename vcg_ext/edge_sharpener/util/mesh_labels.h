@@ -10,7 +10,7 @@
 #include "attributes.h"
 #include "fast_topology.h"
 #include "geometry.h"
-#include "labels.h"
+#include "../labels.h"
 
 namespace edge_sharpener {
 

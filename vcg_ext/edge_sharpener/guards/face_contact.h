@@ -9,8 +9,8 @@
 // (vcglib's algorithm headers need complex.h first)
 #include <vcg/complex/algorithms/clean.h>
 
-#include "attributes.h"
-#include "geometry.h"
+#include "../util/attributes.h"
+#include "../util/geometry.h"
 
 namespace edge_sharpener {
 namespace detail {

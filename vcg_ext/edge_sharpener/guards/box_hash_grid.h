@@ -15,9 +15,9 @@
 #include <utility>
 #include <vector>
 
-#include "attributes.h"
-#include "fast_topology.h"
-#include "parallel.h"
+#include "../util/attributes.h"
+#include "../util/fast_topology.h"
+#include "../util/parallel.h"
 
 namespace edge_sharpener {
 namespace detail {
