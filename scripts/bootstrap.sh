@@ -17,6 +17,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   meshlab xvfb xauth libgl1-mesa-dri xdotool imagemagick
   python3-matplotlib
+  libopenvdb-dev python3-open3d
   clang libclang-rt-14-dev
 )
 

@@ -81,12 +81,15 @@ def write(results, tools, cache, docs):
       f"{results['generated_at']}, source {results['git']}; {len(results['diagonals'])} reference "
       f"meshes, {len(cases)} inputs, {results['seconds'] / 60:.0f} min. Regenerate with:")
     w("")
-    w("```sh\nscripts/bench-quality.sh            # full run (~30 min on 2 cores); "
-      "MeshLab inputs are cached in build/quality-cache\n```")
+    w("```sh\nscripts/bench-quality.sh            # full run; inputs (MeshLab's, OpenVDB's, "
+      "the scans) and the peer's outputs are cached in build/quality-cache\n```")
     w("")
-    w("**How it is measured.** `mesh-distance OUT REFERENCE --json` (the project's Metro): "
-      "two-sided, all vertices + points along the edges + 200,000 area-uniform face points per "
-      "side, fixed seed. All numbers are in **% of the reference's bounding-box diagonal**. "
+    sampling = " ".join(results.get("distance_sampling", ["--sampling", "uniform"]))
+    w("**How it is measured.** `mesh-distance OUT REFERENCE --json " + sampling + "` (the "
+      "project's Metro): two-sided, fixed seed; in MeshLab's mode (`--sampling meshlab`, the "
+      "default of the benchmark) each side samples its vertices, that many points along its "
+      "edges and that many Montecarlo face points, as MeshLab's Hausdorff Distance filter does "
+      "(the uniform mode: all vertices + a quarter as many edge points + stratified face points). All numbers are in **% of the reference's bounding-box diagonal**. "
       "*max* is the Hausdorff distance (the larger one-sided maximum); *mean* and *RMS* average "
       "the two sides (RMS = sqrt((RMS_fwd² + RMS_bwd²)/2)). A reduction factor is before/after "
       "(×2 = error halved; below ×1 = worse; both floored at 1e-4% of the diagonal, the "
@@ -106,6 +109,10 @@ def write(results, tools, cache, docs):
       "sharpened (it has no chamfers: it must not change). Time = the sharpener's own time "
       "(CLI, one thread).")
     w("")
+
+    # ---- generalization (issue 19): every family, validation half first
+    import families
+    L.extend(families.section(results, WORSE_CAUSES))
 
     # ---- headline
     w("## Headline: fandisk, and the paper's claim")
