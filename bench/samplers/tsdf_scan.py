@@ -29,7 +29,7 @@ except ImportError:  # the caller reports "Open3D not installed" and skips the f
 DISTANCE = 1.6  # camera to the shape's centre, in diagonals: the whole shape is in view
 HALF_FOV_TAN = 0.36  # > tan(asin(0.5 / DISTANCE)): a half-diagonal sphere fits in the image
 TRUNCATION_VOXELS = 4.0
-PAIRS_PER_CHUNK = 4_000_000  # (triangle, pixel) candidates per rasterization step (memory)
+PAIRS_PER_CHUNK = 1_000_000  # (triangle, pixel) candidates per rasterization step (memory)
 
 
 def view_directions(count):
