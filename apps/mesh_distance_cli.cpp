@@ -123,7 +123,10 @@ int main(int argc, char** argv) {
                  "Face samples per side, spread by area (edges get a quarter as many)")
       ->capture_default_str()
       ->check(CLI::Range(std::size_t{1}, std::size_t{1000000000}));
-  app.add_option("--seed", options.seed, "Seed of the sampling generator")->capture_default_str();
+  auto* seedOption = app.add_option(
+      "--seed", options.seed,
+      "Seed of the sampling generator (default 1; with --sampling meshlab, 5489: where a fresh "
+      "MeshLab's generator starts, so that the figures are MeshLab's own)");
   std::string sampling = "uniform";
   app.add_option("--sampling", sampling,
                  "How samples are spread on each side. uniform: every vertex, N/4 points along "
@@ -154,6 +157,8 @@ int main(int argc, char** argv) {
   options.sampleEdges = !noEdges;
   options.sampling =
       sampling == "meshlab" ? es::DistanceSampling::meshlab : es::DistanceSampling::uniform;
+  if (options.sampling == es::DistanceSampling::meshlab && seedOption->count() == 0)
+    options.seed = es::kMeshLabSeed;
 
   try {
     es::Mesh a, b;

@@ -501,6 +501,8 @@ def main():
     ap.add_argument("--models", help="comma-separated model names to run (default all)")
     ap.add_argument("--inputs", help="comma-separated input kinds to make (asis, umr, mc, ier, "
                     "csg, poisson, rimls, vdb, scan; default all)")
+    ap.add_argument("--input-keys", help="comma-separated inputs by key, kind and resolution "
+                    "as in the cache's file names (e.g. vdb_1pct,scan_noise0,umr_0.5pct)")
     ap.add_argument("--distance-sampling", choices=("meshlab", "uniform"), default="meshlab",
                     help="mesh-distance --sampling: meshlab (as MeshLab's Hausdorff Distance "
                     "filter, the default) or uniform (the project's own spreading)")
@@ -538,6 +540,8 @@ def main():
     specs = input_specs(args.fast)
     if args.inputs:
         specs = [s for s in specs if s.kind in args.inputs.split(",")]
+    if args.input_keys:
+        specs = [s for s in specs if s.key in args.input_keys.split(",")]
     started = time.monotonic()
 
     # (a) Inputs. MeshLab's, one at a time (two Xvfb servers would race for a display), while

@@ -32,6 +32,10 @@ enum class DistanceSampling {
   meshlab,
 };
 
+/// vcglib's MarsenneTwisterRNG default seed: the state of MeshLab's sampling generator when
+/// its first Hausdorff Distance filter runs in a fresh meshlabserver.
+constexpr unsigned kMeshLabSeed = 5489u;
+
 inline const char* distanceSamplingName(DistanceSampling mode) {
   return mode == DistanceSampling::meshlab ? "meshlab" : "uniform";
 }
@@ -44,7 +48,10 @@ struct DistanceOptions {
   bool sampleVertices = true;
   bool sampleEdges = true;
   bool sampleFaces = true;
-  /// Seeds vcglib's sampling generator before each side: same seed, same numbers.
+  /// Seeds vcglib's sampling generator: same seed, same numbers. Uniform mode seeds it before
+  /// each side; MeshLab mode once, before the forward side, and the backward side continues
+  /// the sequence, as two Hausdorff Distance filters run one after the other in one MeshLab
+  /// session do (kMeshLabSeed is where a fresh MeshLab's generator starts).
   unsigned seed = 1;
 };
 
@@ -134,7 +141,7 @@ OneSidedDistance summarize(const vcg::tri::HausdorffSampler<M>& sampler) {
 
 template <class M>
 OneSidedDistance sampleDistance(M& sampled, M& target, double searchRadius,
-                                const DistanceOptions& options) {
+                                const DistanceOptions& options, bool seedGenerator) {
   using Sink = DistanceSampleSink<M>;
   using Sampling = vcg::tri::SurfaceSampling<M, Sink>;
 
@@ -145,8 +152,8 @@ OneSidedDistance sampleDistance(M& sampled, M& target, double searchRadius,
   sampler.dist_upper_bound = static_cast<typename M::ScalarType>(searchRadius);
   Sink sink(sampler);
 
-  Sampling::SamplingRandomGenerator().initialize(options.seed);
   if (options.sampling == DistanceSampling::meshlab) {
+    if (seedGenerator) Sampling::SamplingRandomGenerator().initialize(options.seed);
     const int n = static_cast<int>(options.faceSamples);
     if (options.sampleVertices) Sampling::VertexUniform(sampled, sink, n);
     if (sampled.fn > 0 && n > 0) {
@@ -155,6 +162,7 @@ OneSidedDistance sampleDistance(M& sampled, M& target, double searchRadius,
     }
     return detail::summarize(sampler);
   }
+  Sampling::SamplingRandomGenerator().initialize(options.seed);
   if (options.sampleVertices) Sampling::AllVertex(sampled, sink);
   if (sampled.fn > 0) {
     if (options.sampleEdges && options.faceSamples >= 4)
@@ -200,8 +208,9 @@ DistanceReport measureDistance(M& a, M& reference, const DistanceOptions& option
 
   DistanceReport report;
   report.referenceDiagonal = reference.bbox.Diag();
-  report.forward = detail::sampleDistance(a, reference, searchRadius, options);
-  report.backward = detail::sampleDistance(reference, a, searchRadius, options);
+  report.forward = detail::sampleDistance(a, reference, searchRadius, options, true);
+  report.backward = detail::sampleDistance(reference, a, searchRadius, options,
+                                           options.sampling != DistanceSampling::meshlab);
   return report;
 }
 
