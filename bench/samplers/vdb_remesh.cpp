@@ -12,7 +12,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <algorithm>
 #include <fstream>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -52,6 +54,28 @@ double signedVolume6(const TriangleMesh& m) {
     sum += a.dot(b.cross(c));
   }
   return sum;
+}
+
+/// (boundary edges, edges with more than two faces): a closed 2-manifold has neither, and the
+/// sharpener refuses a mesh that has any.
+std::pair<std::size_t, std::size_t> edgeCounts(const TriangleMesh& m) {
+  std::vector<std::pair<unsigned, unsigned>> edges;
+  edges.reserve(3 * m.triangles.size());
+  for (const auto& t : m.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const unsigned a = t[i], b = t[(i + 1) % 3];
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  std::sort(edges.begin(), edges.end());
+  std::size_t boundary = 0, nonManifold = 0;
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i == 1) ++boundary;
+    if (j - i > 2) ++nonManifold;
+    i = j;
+  }
+  return {boundary, nonManifold};
 }
 
 void writeBinaryPly(const std::string& path, const TriangleMesh& m) {
@@ -110,8 +134,12 @@ int main(int argc, char** argv) {
     if (signedVolume6(out) < 0)
       for (auto& t : out.triangles) std::swap(t[1], t[2]);
     writeBinaryPly(argv[2], out);
-    std::printf("{\"voxel\": %.9g, \"vertices\": %zu, \"faces\": %zu, \"quads\": %zu}\n", voxel,
-                out.points.size(), out.triangles.size(), quads.size());
+    const auto [boundary, nonManifold] = edgeCounts(out);
+    std::printf(
+        "{\"voxel\": %.9g, \"vertices\": %zu, \"faces\": %zu, \"quads\": %zu, "
+        "\"boundary_edges\": %zu, \"non_manifold_edges\": %zu, \"closed_manifold\": %s}\n",
+        voxel, out.points.size(), out.triangles.size(), quads.size(), boundary, nonManifold,
+        boundary == 0 && nonManifold == 0 ? "true" : "false");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "vdb-remesh: %s\n", e.what());
     return 1;
