@@ -574,27 +574,40 @@ def main():
     log(f"inputs ready after {time.monotonic() - started:.0f} s; sharpening and measuring "
         f"{sum(1 for p in plan if p[2][0])} inputs")
 
-    # (b, c) sharpen + measure, in parallel.
-    cases = []
-    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-        futures = [pool.submit(run_case, tools, m, s, made[0], made[1], cache, mults,
-                               args.timeout, peer)
-                   for (m, s, made, mults), peer in zip(plan, peers)]
-        for fut in futures:
-            cases.append(fut.result())
+    # (b, c) sharpen + measure, in parallel; the validation half first. The results file is
+    # rewritten as cases finish (marked partial), so an interrupted run still leaves a report
+    # (--report-only) of what it measured.
     notes = {m.name: m.note for m in models if m.note}
     halves = {m.name: m.half for m in models}
     diags = {m.name: m.diag for m in models}
-    results = {"generated_at": time.strftime("%Y-%m-%d %H:%M:%S"),
-               "fast": args.fast, "seconds": round(time.monotonic() - started, 1),
-               "methods": list(VARIANTS), "default_multiplier": DEFAULT_MULTIPLIER,
-               "sweep": list(SWEEP), "notes": notes, "diagonals": diags, "halves": halves,
-               "split_rule": load_split()["rule"],
-               "distance_sampling": [*_distance_sampling, "--samples", str(DISTANCE_SAMPLES)],
-               "cases": cases,
-               "git": _git_describe()}
-    with open(out, "w") as f:
-        json.dump(results, f, indent=1)
+    work = sorted(zip(plan, peers), key=lambda item: item[0][0].half != "validation")
+
+    def results_of(cases, partial):
+        return {"generated_at": time.strftime("%Y-%m-%d %H:%M:%S"),
+                "fast": args.fast, "seconds": round(time.monotonic() - started, 1),
+                "partial": partial, "planned_inputs": len(work),
+                "methods": list(VARIANTS), "default_multiplier": DEFAULT_MULTIPLIER,
+                "sweep": list(SWEEP), "notes": notes, "diagonals": diags, "halves": halves,
+                "split_rule": load_split()["rule"],
+                "distance_sampling": [*_distance_sampling, "--samples", str(DISTANCE_SAMPLES)],
+                "cases": cases, "git": _git_describe()}
+
+    def save(results):
+        with open(out + ".tmp", "w") as f:
+            json.dump(results, f, indent=1)
+        os.replace(out + ".tmp", out)
+
+    done = {}
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        futures = {pool.submit(run_case, tools, m, s, made[0], made[1], cache, mults,
+                               args.timeout, peer): i
+                   for i, ((m, s, made, mults), peer) in enumerate(work)}
+        for fut in concurrent.futures.as_completed(futures):
+            done[futures[fut]] = fut.result()
+            if len(done) % 5 == 0 and len(done) < len(work):
+                save(results_of([done[i] for i in sorted(done)], partial=True))
+    results = results_of([done[i] for i in sorted(done)], partial=False)
+    save(results)
     log(f"results: {out} ({results['seconds']:.0f} s)")
 
     if not args.no_report:
