@@ -463,6 +463,8 @@ def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cach
 
 
 def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout, peer=None):
+    """Measures the input, sharpens it with every variant and measures each output; `peer`,
+    when given, makes (or reads from the cache) the peer's output: (path or None, info)."""
     case = {"model": model.name, "group": model.group, "half": model.half, "input": spec.kind,
             "input_title": INPUT_TITLES[spec.kind], "resolution": spec.res_label,
             "res_value": spec.res_value, "order": spec.order, "make": info, "runs": []}
@@ -478,7 +480,7 @@ def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout, pee
             case["runs"].append(sharpen_and_measure(tools, model, spec, in_path, d, method, mult,
                                                     cache, timeout))
     if peer is not None:
-        case["runs"].append(measure_peer(tools, model, in_path, peer, timeout))
+        case["runs"].append(measure_peer(tools, model, in_path, peer(), timeout))
     return case
 
 
@@ -565,12 +567,18 @@ def main():
     for item in plan:
         if isinstance(item[2], concurrent.futures.Future):
             item[2] = item[2].result()
-    # The peer (MeshLab again, so one at a time) on every input but the references themselves.
+    # The peer (MeshLab again) on every input but the references themselves: made in the
+    # sharpening pool below, under a lock (two Xvfb servers would race for a display).
     peers = []
+    server_lock = threading.Lock()
     for model, spec, (in_path, _), _ in plan:
         use_peer = in_path and not args.no_peer and spec.kind != "asis"
-        peers.append(make_peer_output(server, model, spec, in_path, cache, args.refresh,
-                                      args.timeout) if use_peer else None)
+
+        def peer(model=model, spec=spec, in_path=in_path):
+            with server_lock:
+                return make_peer_output(server, model, spec, in_path, cache, args.refresh,
+                                        args.timeout)
+        peers.append(peer if use_peer else None)
     log(f"inputs ready after {time.monotonic() - started:.0f} s; sharpening and measuring "
         f"{sum(1 for p in plan if p[2][0])} inputs")
 
