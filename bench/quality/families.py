@@ -137,8 +137,11 @@ def _cause(case, method, causes):
     if case["input"] == "scan":
         return ("scan: the TSDF's marching cubes leave a bumpy surface (and the depth noise): "
                 "planes fitted to it are off; not diagnosed case by case")
+    if case["input"] == "asis":
+        return "the reference itself sharpened; not diagnosed yet"
     if case["model"] in causes:
-        return "see *Causes found* below (" + case["model"] + ")"
+        return ("a cause found on this model for some of its inputs is under *Causes found* "
+                "below (" + case["model"] + "); this case not checked against it")
     return "not diagnosed yet"
 
 
