@@ -1,7 +1,7 @@
 // mesh-distance: the project's Metro. Two-sided surface distance between mesh A and the
 // reference mesh B, absolute and as a percentage of B's bounding-box diagonal.
 //
-//   mesh-distance A B [--samples N] [--seed S] [--json] [--no-vertex-samples] [--no-edge-samples]
+//   mesh-distance A B [--samples N] [--seed S] [--sampling uniform|meshlab] [--json] [--no-vertex-samples] [--no-edge-samples]
 //                     [--color-out FILE.ply [--color-max D | --color-max-percent P]]
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -123,7 +123,18 @@ int main(int argc, char** argv) {
                  "Face samples per side, spread by area (edges get a quarter as many)")
       ->capture_default_str()
       ->check(CLI::Range(std::size_t{1}, std::size_t{1000000000}));
-  app.add_option("--seed", options.seed, "Seed of the sampling generator")->capture_default_str();
+  auto* seedOption = app.add_option(
+      "--seed", options.seed,
+      "Seed of the sampling generator (default 1; with --sampling meshlab, 5489: where a fresh "
+      "MeshLab's generator starts, so that the figures are MeshLab's own)");
+  std::string sampling = "uniform";
+  app.add_option("--sampling", sampling,
+                 "How samples are spread on each side. uniform: every vertex, N/4 points along "
+                 "the edges, N face points by stratified subdivision. meshlab: as MeshLab's "
+                 "\"Hausdorff Distance\" filter (vertices, edges and faces sampled): N vertices "
+                 "(all when N >= their count), N points along the edges, N Montecarlo face points")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"uniform", "meshlab"}));
   app.add_flag("--json", json, "Print the result as JSON");
   bool noVertices = false, noEdges = false;
   app.add_flag("--no-vertex-samples", noVertices, "Do not sample the meshes' vertices");
@@ -144,6 +155,10 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   options.sampleVertices = !noVertices;
   options.sampleEdges = !noEdges;
+  options.sampling =
+      sampling == "meshlab" ? es::DistanceSampling::meshlab : es::DistanceSampling::uniform;
+  if (options.sampling == es::DistanceSampling::meshlab && seedOption->count() == 0)
+    options.seed = es::kMeshLabSeed;
 
   try {
     es::Mesh a, b;
@@ -167,6 +182,7 @@ int main(int argc, char** argv) {
       nlohmann::json out = {{"a", meshJson(pathA, a)},
                             {"b", meshJson(pathB, b)},
                             {"reference_diagonal", report.referenceDiagonal},
+                            {"sampling", es::distanceSamplingName(options.sampling)},
                             {"face_samples", options.faceSamples},
                             {"seed", options.seed},
                             {"sampled",
@@ -192,6 +208,8 @@ int main(int argc, char** argv) {
     std::printf("A: %s (%d vertices, %d faces)\n", pathA.c_str(), a.vn, a.fn);
     std::printf("B: %s (%d vertices, %d faces), reference diagonal %.6g\n", pathB.c_str(), b.vn,
                 b.fn, report.referenceDiagonal);
+    std::printf("sampling: %s, %zu samples per kind\n", es::distanceSamplingName(options.sampling),
+                options.faceSamples);
     std::printf("%-16s %12s %12s %12s %12s %10s\n", "", "min", "max", "mean", "RMS", "samples");
     printRow("forward  A->B", f.min, f.max, f.mean, f.rms, std::to_string(f.samples), report);
     printRow("backward B->A", r.min, r.max, r.mean, r.rms, std::to_string(r.samples), report);

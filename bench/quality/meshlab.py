@@ -130,6 +130,16 @@ def rimls_marching_cubes(resolution, filter_scale=4):
     ])
 
 
+def unsharp_mask_geometry():
+    """MeshLab's stock "UnSharp Mask Geometry" at its default parameters (filter_unsharp.cpp):
+    the peer a MeshLab user already has for sharpening a mesh."""
+    return _filter("UnSharp Mask Geometry", [
+        _p_float("weight", 0.3),
+        _p_float("weightOrig", 1.0),
+        _p_int("iterations", 5),
+    ])
+
+
 def hausdorff(sampled, target, samples, max_dist, diag):
     """One-sided Hausdorff Distance (vertices + edges + faces sampled); logs min/max/mean/RMS."""
     return _filter("Hausdorff Distance", [

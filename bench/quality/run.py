@@ -1,17 +1,22 @@
 #!/usr/bin/env python3
 """Edge-Sharpener quality benchmark: the paper's Metro experiments with real remeshers.
 
-For every reference mesh (the exact generated test shapes, and every mesh in
-../shared/meshes when present) it
-  1. makes feature-insensitive remeshings with the real meshlabserver (Uniform Mesh
-     Resampling at several cell sizes, Isotropic Explicit Remeshing with features off,
-     CSG union = marching intersections, Screened Poisson from a point sampling) and the
-     feature-preserving competitor "Marching Cubes (RIMLS)" from the same points; they are
-     cached in CACHE/inputs (a MeshLab abort or time-out is cached and reported, not fatal);
-  2. sharpens each with the edge-sharpener CLI (identical to the MeshLab filter), both
-     methods (paper, extended), default multiplier and a multiplier sweep, and the extended
-     method with the opt-in strict plane guard (--strict, default multiplier);
-  3. measures every mesh against the reference with mesh-distance --json (two-sided, Metro);
+For every reference mesh (the exact generated test shapes, the real parts in
+test_meshes/real, and every mesh in ../shared/meshes when present; each in the tuning or
+the validation half fixed by bench/quality/split.json) it
+  1. makes feature-insensitive remeshings (the sampler families) with the real meshlabserver
+     (Uniform Mesh Resampling at several cell sizes, Isotropic Explicit Remeshing with
+     features off, CSG intersection = marching intersections, Screened Poisson from a point
+     sampling), the feature-preserving competitor "Marching Cubes (RIMLS)" from the same
+     points, OpenVDB's voxel remesher (bench/samplers/vdb-remesh) and depth-camera scans fused
+     in a TSDF (bench/samplers/tsdf_scan.py); they are cached in CACHE/inputs (a failure or
+     time-out is cached and reported, not fatal);
+  2. sharpens each with the edge-sharpener CLI (identical to the MeshLab filter): every
+     method and variant (paper, extended, extended-strict, extended-grid,
+     extended-strict-grid) at the default multiplier, and a multiplier sweep; and MeshLab's
+     stock "UnSharp Mask Geometry" at its defaults as the peer (cached like the inputs);
+  3. measures every mesh against the reference with mesh-distance --json --sampling meshlab
+     (two-sided, samples spread as MeshLab's Hausdorff Distance filter spreads them);
   4. writes CACHE/results.json and, unless --no-report, docs/results.md and
      docs/images/results-*.png (report.py).
 
@@ -51,6 +56,15 @@ SWEEP = (1.5, 2.0, 2.5, 3.0)
 GENERATED_SHAPES = ("cube", "lblock", "lblock_tilted", "wedge", "pyramid", "cross_prism",
                     "cylinder_block", "sphere")
 POINT_SAMPLES = 100000
+# mesh-distance in MeshLab's sampling mode: this many vertex, edge and face samples per side.
+DISTANCE_SAMPLES = 100000
+_distance_sampling = ["--sampling", "meshlab"]  # --distance-sampling
+# The peer: MeshLab's stock filter, run on every input (not a variant of our CLI).
+PEER = "unsharp-mask"
+# Inputs made by the project's own sampler tools, not by meshlabserver: made in parallel.
+LOCAL_KINDS = ("vdb", "scan")
+SPLIT_FILE = os.path.join(HERE, "split.json")
+REAL_DIR = os.path.join(SOURCE, "test_meshes", "real")
 
 _print_lock = threading.Lock()
 
@@ -83,6 +97,8 @@ INPUT_TITLES = {
     "csg": "CSG intersection with itself (marching intersections)",
     "poisson": "Screened Poisson from 100k points",
     "rimls": "Marching Cubes (RIMLS) from 100k points",
+    "vdb": "OpenVDB volumeToMesh (voxel remesher, adaptivity 0, quads split)",
+    "scan": "depth-camera scan: 26 depth views fused in a TSDF (voxel 1%)",
 }
 
 
@@ -92,6 +108,12 @@ def input_specs(fast):
                 InputSpec("mc", "1%", 0.01, 2.5)]
     return [
         InputSpec("asis", "-", None, 0),
+        InputSpec("vdb", "2%", 0.02, 11),
+        InputSpec("vdb", "1%", 0.01, 12),
+        InputSpec("vdb", "0.5%", 0.005, 13),
+        InputSpec("scan", "noise 0", 0.0, 14),
+        InputSpec("scan", "noise 0.1 voxel", 0.1, 15),
+        InputSpec("scan", "noise 0.2 voxel", 0.2, 16),
         InputSpec("umr", "2%", 0.02, 1),
         InputSpec("umr", "1%", 0.01, 2),
         InputSpec("umr", "0.5%", 0.005, 3),
@@ -129,6 +151,10 @@ class Tools:
         self.distance = self._find("mesh-distance")
         self.generator = self._find("generate-test-meshes")
         self.server = os.path.join(build, "meshlab-prefix", "bin", "meshlabserver")
+        vdb = os.path.join(build, "bench", "samplers", "vdb-remesh")
+        self.vdb = vdb if os.access(vdb, os.X_OK) else None
+        self.scan = [SYSTEM_PYTHON, os.path.join(SOURCE, "bench", "samplers", "tsdf_scan.py")]
+        self.scan_missing = _open3d_missing()
 
     def _find(self, name):
         for sub in ("apps", "test_meshes", "."):
@@ -136,6 +162,17 @@ class Tools:
             if os.access(p, os.X_OK):
                 return p
         sys.exit(f"bench/quality: {name} not found in {self.build} (build the project first)")
+
+
+SYSTEM_PYTHON = "/usr/bin/python3"  # Debian's, where python3-open3d is installed
+
+
+def _open3d_missing():
+    """Why depth-camera scans cannot be made here ("" when they can)."""
+    if not os.access(SYSTEM_PYTHON, os.X_OK):
+        return f"{SYSTEM_PYTHON} not found"
+    p = subprocess.run([SYSTEM_PYTHON, "-c", "import open3d"], capture_output=True)
+    return "" if p.returncode == 0 else "Open3D (Debian python3-open3d) not installed"
 
 
 def run_json(cmd, timeout):
@@ -157,19 +194,22 @@ def run_json(cmd, timeout):
         return None, seconds, f"bad JSON: {e}"
 
 
-def measure(tools, mesh, reference, timeout, extra=()):
-    d, _, err = run_json([tools.distance, mesh, reference, "--json", *extra], timeout)
+def measure(tools, mesh, reference, timeout, samples=DISTANCE_SAMPLES):
+    d, _, err = run_json([tools.distance, mesh, reference, "--json", *_distance_sampling,
+                          "--samples", str(samples)], timeout)
     if d is None:
         return None, err
     return {"max": d["symmetric"]["max_percent"], "mean": d["symmetric"]["mean_percent"],
             "rms": d["symmetric"]["rms_percent"], "max_fwd": d["forward"]["max_percent"],
             "max_bwd": d["backward"]["max_percent"], "faces": d["a"]["faces"],
-            "vertices": d["a"]["vertices"], "diag": d["reference_diagonal"]}, ""
+            "vertices": d["a"]["vertices"], "diag": d["reference_diagonal"],
+            "sampling": d.get("sampling", "uniform")}, ""
 
 
 # --------------------------------------------------------------------------- models
 class Model:
     def __init__(self, name, reference, source, group, note=""):
+        self.half = None  # "tuning" or "validation" (split.json)
         self.name = name
         self.reference = reference  # what distances are measured against
         self.source = source  # what MeshLab remeshes (and the "as is" input)
@@ -214,11 +254,18 @@ def collect_models(tools, cache, shared_dir, fast, only):
         ref = os.path.join(gen_dir, f"{s}_reference.ply")
         note = "no sharp edges: must stay unchanged" if s == "sphere" else ""
         models.append(Model(s, ref, ref, "generated", note))
+    real = {}
+    if not fast:
+        for path in sorted(glob.glob(os.path.join(REAL_DIR, "*"))):
+            stem, ext = os.path.splitext(os.path.basename(path))
+            if ext.lower() in (".off", ".obj", ".stl", ".ply"):
+                real[stem] = path
+                models.append(Model(stem, path, path, "real"))
     if not fast and shared_dir and os.path.isdir(shared_dir):
         for path in sorted(glob.glob(os.path.join(shared_dir, "*"))):
             base = os.path.basename(path)
             stem, ext = os.path.splitext(base)
-            if ext.lower() not in (".off", ".obj", ".stl", ".ply"):
+            if ext.lower() not in (".off", ".obj", ".stl", ".ply") or stem in real:
                 continue
             name = stem
             if stem == "chamfer-cube":
@@ -234,11 +281,32 @@ def collect_models(tools, cache, shared_dir, fast, only):
             models.append(Model(name, path, path, "shared", note))
     if only:
         models = [m for m in models if m.name in only]
+    assign_halves(models)
     return models
 
 
+def load_split():
+    with open(SPLIT_FILE) as f:
+        return json.load(f)
+
+
+def assign_halves(models):
+    """Puts every model in its half (split.json); an unlisted reference is an error, so that
+    no mesh enters the benchmark without its half being fixed by the stated rule."""
+    split = load_split()
+    tuning, validation = set(split["tuning"]), set(split["validation"])
+    for m in models:
+        if m.name in tuning:
+            m.half = "tuning"
+        elif m.name in validation:
+            m.half = "validation"
+        else:
+            sys.exit(f"bench/quality: {m.name} is in neither half of {SPLIT_FILE}: add it by "
+                     f"the rule stated there")
+
+
 # --------------------------------------------------------------------------- steps
-def make_input(server, model, spec, cache, refresh, timeout):
+def make_input(server, model, spec, cache, refresh, timeout, tools_for_local=None):
     """Creates (or reuses) the chamfered input. Returns (path or None, info dict)."""
     if spec.kind == "asis":
         return model.source, {"status": "ok", "seconds": 0.0}
@@ -249,6 +317,8 @@ def make_input(server, model, spec, cache, refresh, timeout):
     if model.name == "chamfer-cube":
         return None, {"status": "not applied", "why": "already chamfered: only measured as is"}
     key = f"{model.name}__{spec.key}"
+    if spec.kind in LOCAL_KINDS:
+        return make_local_input(tools_for_local, model, spec, cache, refresh, timeout, key)
     out = os.path.join(cache, "inputs", key + ".ply")
     status_path = os.path.join(cache, "inputs", key + ".json")
     if not refresh and os.path.exists(status_path):
@@ -273,6 +343,90 @@ def make_input(server, model, spec, cache, refresh, timeout):
     with open(status_path, "w") as f:
         json.dump(info, f)
     return (out if ok else None), info
+
+
+def cached_info(cache, key, refresh):
+    """(output path, info) of a cached step, or None when it must be (re)made."""
+    out = os.path.join(cache, "inputs", key + ".ply")
+    status_path = os.path.join(cache, "inputs", key + ".json")
+    if not refresh and os.path.exists(status_path):
+        with open(status_path) as f:
+            info = json.load(f)
+        if info["status"] != "ok" or os.path.exists(out):
+            return (out if info["status"] == "ok" else None), info
+    return None
+
+
+def store_info(cache, key, info):
+    status_path = os.path.join(cache, "inputs", key + ".json")
+    os.makedirs(os.path.dirname(status_path), exist_ok=True)
+    with open(status_path, "w") as f:
+        json.dump(info, f)
+
+
+def make_local_input(tools, model, spec, cache, refresh, timeout, key):
+    """An input made by the project's own sampler tools (OpenVDB remesher, TSDF scan)."""
+    hit = cached_info(cache, key, refresh)
+    if hit is not None:
+        return hit
+    out = os.path.join(cache, "inputs", key + ".ply")
+    if spec.kind == "vdb":
+        if tools.vdb is None:
+            return None, {"status": "skipped", "why": "vdb-remesh not built (OpenVDB not installed)"}
+        cmd = [tools.vdb, model.source, out, "--voxel-fraction", str(spec.res_value)]
+    else:
+        if tools.scan_missing:
+            return None, {"status": "skipped", "why": tools.scan_missing}
+        cmd = [*tools.scan, model.source, out, "--voxel-fraction", "0.01",
+               "--noise", str(spec.res_value)]
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    made, seconds, why = run_json(cmd, timeout)
+    info = {"status": "ok" if made is not None else "failed", "seconds": round(seconds, 2)}
+    if made is None:
+        info["why"] = why
+        log(f"{key}: sampler failed ({why}); skipped")
+    else:
+        info["sampler"] = made
+        log(f"{key}: made in {seconds:.1f} s")
+    store_info(cache, key, info)
+    return (out if made is not None else None), info
+
+
+def make_peer_output(server, model, spec, in_path, cache, refresh, timeout):
+    """MeshLab's "UnSharp Mask Geometry" (defaults) applied to the input, cached like it."""
+    key = f"{model.name}__{spec.key}__{PEER}"
+    hit = cached_info(cache, key, refresh)
+    if hit is not None:
+        return hit
+    if server is None:
+        return None, {"status": "skipped", "why": "meshlabserver not available"}
+    out = os.path.join(cache, "inputs", key + ".ply")
+    workdir = os.path.join(cache, "work", key)
+    ok, seconds, why = server.run([in_path], out, meshlab.script(meshlab.unsharp_mask_geometry()),
+                                  workdir, timeout)
+    info = {"status": "ok" if ok else "failed", "seconds": round(seconds, 2)}
+    if not ok:
+        info["why"] = why
+        log(f"{key}: MeshLab's UnSharp Mask failed ({why})")
+    store_info(cache, key, info)
+    return (out if ok else None), info
+
+
+def measure_peer(tools, model, in_path, peer, timeout):
+    """The peer's row, shaped like a sharpener run."""
+    out, info = peer
+    row = {"method": PEER, "multiplier": DEFAULT_MULTIPLIER, "peer": True}
+    if out is None:
+        row.update(status="peer failed", why=info.get("why", info["status"]))
+        return row
+    row["seconds"] = info.get("seconds")
+    d, err = measure(tools, out, model.reference, timeout)
+    if d is None:
+        row.update(status="measure failed", why=err)
+        return row
+    row["after"] = d
+    row["status"] = "ok"
+    return row
 
 
 def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cache, timeout):
@@ -308,8 +462,10 @@ def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cach
     return row
 
 
-def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout):
-    case = {"model": model.name, "group": model.group, "input": spec.kind,
+def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout, peer=None):
+    """Measures the input, sharpens it with every variant and measures each output; `peer`,
+    when given, makes (or reads from the cache) the peer's output: (path or None, info)."""
+    case = {"model": model.name, "group": model.group, "half": model.half, "input": spec.kind,
             "input_title": INPUT_TITLES[spec.kind], "resolution": spec.res_label,
             "res_value": spec.res_value, "order": spec.order, "make": info, "runs": []}
     if in_path is None:
@@ -323,11 +479,13 @@ def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout):
         for mult in multipliers if method in SWEPT_VARIANTS else [DEFAULT_MULTIPLIER]:
             case["runs"].append(sharpen_and_measure(tools, model, spec, in_path, d, method, mult,
                                                     cache, timeout))
+    if peer is not None:
+        case["runs"].append(measure_peer(tools, model, in_path, peer(), timeout))
     return case
 
 
 def diagonal(tools, path):
-    d, err = measure(tools, path, path, 300, extra=("--samples", "4"))
+    d, err = measure(tools, path, path, 300, samples=4)
     if d is None:
         raise RuntimeError(f"{path}: {err}")
     return d["diag"]
@@ -344,7 +502,14 @@ def main():
                     help="generated shapes only, UMR 1%% only, multiplier 2 (the CTest subset)")
     ap.add_argument("--models", help="comma-separated model names to run (default all)")
     ap.add_argument("--inputs", help="comma-separated input kinds to make (asis, umr, mc, ier, "
-                    "csg, poisson, rimls; default all)")
+                    "csg, poisson, rimls, vdb, scan; default all)")
+    ap.add_argument("--input-keys", help="comma-separated inputs by key, kind and resolution "
+                    "as in the cache's file names (e.g. vdb_1pct,scan_noise0,umr_0.5pct)")
+    ap.add_argument("--distance-sampling", choices=("meshlab", "uniform"), default="meshlab",
+                    help="mesh-distance --sampling: meshlab (as MeshLab's Hausdorff Distance "
+                    "filter, the default) or uniform (the project's own spreading)")
+    ap.add_argument("--no-peer", action="store_true",
+                    help="do not run MeshLab's UnSharp Mask Geometry (the peer row)")
     ap.add_argument("--jobs", type=int, default=2, help="parallel sharpen/measure jobs")
     ap.add_argument("--timeout", type=int, default=600, help="time limit of each step, seconds")
     ap.add_argument("--refresh", action="store_true", help="remake the cached MeshLab inputs")
@@ -356,6 +521,7 @@ def main():
     args = ap.parse_args()
 
     build = os.path.abspath(args.build)
+    _distance_sampling[1] = args.distance_sampling
     cache = os.path.abspath(args.cache or os.path.join(build, "quality-cache"))
     os.makedirs(os.path.join(cache, "outputs"), exist_ok=True)
     tools = Tools(build)
@@ -376,37 +542,80 @@ def main():
     specs = input_specs(args.fast)
     if args.inputs:
         specs = [s for s in specs if s.kind in args.inputs.split(",")]
+    if args.input_keys:
+        specs = [s for s in specs if s.key in args.input_keys.split(",")]
     started = time.monotonic()
 
-    # (a) MeshLab inputs, one at a time (two Xvfb servers would race for a display).
+    # (a) Inputs. MeshLab's, one at a time (two Xvfb servers would race for a display), while
+    # the project's own samplers (OpenVDB, TSDF scans) run beside them in a pool.
     plan = []
+    local_pool = concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs))
     for model in models:
         model.diag = diagonal(tools, model.reference)
+    for model in models:
         for spec in specs:
-            in_path, info = make_input(server, model, spec, cache, args.refresh, args.timeout)
+            if spec.kind in LOCAL_KINDS:
+                made = local_pool.submit(make_input, server, model, spec, cache, args.refresh,
+                                         args.timeout, tools)
+            else:
+                made = make_input(server, model, spec, cache, args.refresh, args.timeout)
             mults = [DEFAULT_MULTIPLIER]
             if not args.fast and spec.kind in ("umr", "ier") and spec.res_label == "1%":
                 mults = list(SWEEP)
-            plan.append((model, spec, in_path, info, mults))
-    log(f"inputs ready after {time.monotonic() - started:.0f} s; sharpening and measuring "
-        f"{sum(1 for p in plan if p[2])} inputs")
+            plan.append([model, spec, made, mults])
+    local_pool.shutdown(wait=True)
+    for item in plan:
+        if isinstance(item[2], concurrent.futures.Future):
+            item[2] = item[2].result()
+    # The peer (MeshLab again) on every input but the references themselves: made in the
+    # sharpening pool below, under a lock (two Xvfb servers would race for a display).
+    peers = []
+    server_lock = threading.Lock()
+    for model, spec, (in_path, _), _ in plan:
+        use_peer = in_path and not args.no_peer and spec.kind != "asis"
 
-    # (b, c) sharpen + measure, in parallel.
-    cases = []
-    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-        futures = [pool.submit(run_case, tools, m, s, p, i, cache, mults, args.timeout)
-                   for m, s, p, i, mults in plan]
-        for fut in futures:
-            cases.append(fut.result())
+        def peer(model=model, spec=spec, in_path=in_path):
+            with server_lock:
+                return make_peer_output(server, model, spec, in_path, cache, args.refresh,
+                                        args.timeout)
+        peers.append(peer if use_peer else None)
+    log(f"inputs ready after {time.monotonic() - started:.0f} s; sharpening and measuring "
+        f"{sum(1 for p in plan if p[2][0])} inputs")
+
+    # (b, c) sharpen + measure, in parallel; the validation half first. The results file is
+    # rewritten as cases finish (marked partial), so an interrupted run still leaves a report
+    # (--report-only) of what it measured.
     notes = {m.name: m.note for m in models if m.note}
+    halves = {m.name: m.half for m in models}
     diags = {m.name: m.diag for m in models}
-    results = {"generated_at": time.strftime("%Y-%m-%d %H:%M:%S"),
-               "fast": args.fast, "seconds": round(time.monotonic() - started, 1),
-               "methods": list(VARIANTS), "default_multiplier": DEFAULT_MULTIPLIER,
-               "sweep": list(SWEEP), "notes": notes, "diagonals": diags, "cases": cases,
-               "git": _git_describe()}
-    with open(out, "w") as f:
-        json.dump(results, f, indent=1)
+    work = sorted(zip(plan, peers), key=lambda item: item[0][0].half != "validation")
+
+    def results_of(cases, partial):
+        return {"generated_at": time.strftime("%Y-%m-%d %H:%M:%S"),
+                "fast": args.fast, "seconds": round(time.monotonic() - started, 1),
+                "partial": partial, "planned_inputs": len(work),
+                "methods": list(VARIANTS), "default_multiplier": DEFAULT_MULTIPLIER,
+                "sweep": list(SWEEP), "notes": notes, "diagonals": diags, "halves": halves,
+                "split_rule": load_split()["rule"],
+                "distance_sampling": [*_distance_sampling, "--samples", str(DISTANCE_SAMPLES)],
+                "cases": cases, "git": _git_describe()}
+
+    def save(results):
+        with open(out + ".tmp", "w") as f:
+            json.dump(results, f, indent=1)
+        os.replace(out + ".tmp", out)
+
+    done = {}
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        futures = {pool.submit(run_case, tools, m, s, made[0], made[1], cache, mults,
+                               args.timeout, peer): i
+                   for i, ((m, s, made, mults), peer) in enumerate(work)}
+        for fut in concurrent.futures.as_completed(futures):
+            done[futures[fut]] = fut.result()
+            if len(done) % 5 == 0 and len(done) < len(work):
+                save(results_of([done[i] for i in sorted(done)], partial=True))
+    results = results_of([done[i] for i in sorted(done)], partial=False)
+    save(results)
     log(f"results: {out} ({results['seconds']:.0f} s)")
 
     if not args.no_report:

@@ -3,6 +3,10 @@
 // along its edges and points spread over its faces in proportion to area) are looked up on
 // the other surface through a uniform grid. Built on vcglib's HausdorffSampler and
 // SurfaceSampling; a fixed seed makes the result deterministic.
+// Two ways of spreading the samples (DistanceSampling): the project's own (stratified face
+// subdivision, a quarter as many edge samples) and MeshLab's "Hausdorff Distance" filter's
+// (the same count of vertex, edge and Montecarlo face samples), so that figures can be compared
+// with what a MeshLab user measures.
 #pragma once
 
 #include <vcg/complex/complex.h>
@@ -17,14 +21,37 @@
 
 namespace edge_sharpener {
 
+/// How the sampled side's points are spread.
+enum class DistanceSampling {
+  /// Every vertex, N/4 points along the edges (by length), N points by stratified subdivision of
+  /// the faces (FaceSubdivision, random point per cell).
+  uniform,
+  /// As MeshLab 2020.09's "Hausdorff Distance" filter with vertices, edges and faces sampled
+  /// (filter_sampling.cpp): VertexUniform(N) (every vertex when N >= vertex count), EdgeUniform(N)
+  /// over the non-faux unique edges, Montecarlo(N) over the faces.
+  meshlab,
+};
+
+/// vcglib's MarsenneTwisterRNG default seed: the state of MeshLab's sampling generator when
+/// its first Hausdorff Distance filter runs in a fresh meshlabserver.
+constexpr unsigned kMeshLabSeed = 5489u;
+
+inline const char* distanceSamplingName(DistanceSampling mode) {
+  return mode == DistanceSampling::meshlab ? "meshlab" : "uniform";
+}
+
 struct DistanceOptions {
+  DistanceSampling sampling = DistanceSampling::uniform;
   /// Points spread over the faces of each sampled mesh, in proportion to face area.
   /// Edges get a quarter as many points, in proportion to length.
   std::size_t faceSamples = 200000;
   bool sampleVertices = true;
   bool sampleEdges = true;
   bool sampleFaces = true;
-  /// Seeds vcglib's sampling generator before each side: same seed, same numbers.
+  /// Seeds vcglib's sampling generator: same seed, same numbers. Uniform mode seeds it before
+  /// each side; MeshLab mode once, before the forward side, and the backward side continues
+  /// the sequence, as two Hausdorff Distance filters run one after the other in one MeshLab
+  /// session do (kMeshLabSeed is where a fresh MeshLab's generator starts).
   unsigned seed = 1;
 };
 
@@ -100,8 +127,21 @@ vcg::Box3<typename M::ScalarType> closestFaceGridBox(const M &target, const M &q
 namespace detail {
 
 template <class M>
+OneSidedDistance summarize(const vcg::tri::HausdorffSampler<M>& sampler) {
+  OneSidedDistance result;
+  result.samples = static_cast<std::size_t>(sampler.n_total_samples);
+  if (result.samples == 0) return result;
+  result.min = sampler.min_dist;
+  result.max = sampler.max_dist;
+  result.mean = sampler.mean_dist / sampler.n_total_samples;
+  // HausdorffSampler accumulates the sum of squares in RMS_dist.
+  result.rms = std::sqrt(sampler.RMS_dist / sampler.n_total_samples);
+  return result;
+}
+
+template <class M>
 OneSidedDistance sampleDistance(M& sampled, M& target, double searchRadius,
-                                const DistanceOptions& options) {
+                                const DistanceOptions& options, bool seedGenerator) {
   using Sink = DistanceSampleSink<M>;
   using Sampling = vcg::tri::SurfaceSampling<M, Sink>;
 
@@ -112,6 +152,16 @@ OneSidedDistance sampleDistance(M& sampled, M& target, double searchRadius,
   sampler.dist_upper_bound = static_cast<typename M::ScalarType>(searchRadius);
   Sink sink(sampler);
 
+  if (options.sampling == DistanceSampling::meshlab) {
+    if (seedGenerator) Sampling::SamplingRandomGenerator().initialize(options.seed);
+    const int n = static_cast<int>(options.faceSamples);
+    if (options.sampleVertices) Sampling::VertexUniform(sampled, sink, n);
+    if (sampled.fn > 0 && n > 0) {
+      if (options.sampleEdges) Sampling::EdgeUniform(sampled, sink, n, /*sampleFauxEdge=*/false);
+      if (options.sampleFaces) Sampling::Montecarlo(sampled, sink, n);
+    }
+    return detail::summarize(sampler);
+  }
   Sampling::SamplingRandomGenerator().initialize(options.seed);
   if (options.sampleVertices) Sampling::AllVertex(sampled, sink);
   if (sampled.fn > 0) {
@@ -122,15 +172,7 @@ OneSidedDistance sampleDistance(M& sampled, M& target, double searchRadius,
                                 /*randSample=*/true);
   }
 
-  OneSidedDistance result;
-  result.samples = static_cast<std::size_t>(sampler.n_total_samples);
-  if (result.samples == 0) return result;
-  result.min = sampler.min_dist;
-  result.max = sampler.max_dist;
-  result.mean = sampler.mean_dist / sampler.n_total_samples;
-  // HausdorffSampler accumulates the sum of squares in RMS_dist.
-  result.rms = std::sqrt(sampler.RMS_dist / sampler.n_total_samples);
-  return result;
+  return detail::summarize(sampler);
 }
 
 }  // namespace detail
@@ -166,8 +208,9 @@ DistanceReport measureDistance(M& a, M& reference, const DistanceOptions& option
 
   DistanceReport report;
   report.referenceDiagonal = reference.bbox.Diag();
-  report.forward = detail::sampleDistance(a, reference, searchRadius, options);
-  report.backward = detail::sampleDistance(reference, a, searchRadius, options);
+  report.forward = detail::sampleDistance(a, reference, searchRadius, options, true);
+  report.backward = detail::sampleDistance(reference, a, searchRadius, options,
+                                           options.sampling != DistanceSampling::meshlab);
   return report;
 }
 
