@@ -14,7 +14,7 @@
 
 #include "capacity_hint.h"
 #include "edge_sharpener/edge_sharpener.h"
-#include "edge_sharpener/mesh_distance.h"
+#include "mesh_distance.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "edge_sharpener/option_table.h"
 #include "mesh_io.h"

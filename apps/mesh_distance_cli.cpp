@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "edge_sharpener/mesh_distance.h"
+#include "mesh_distance.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "mesh_io.h"
 // (vcglib's algorithm headers need complex.h, included above, first)

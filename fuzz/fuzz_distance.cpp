@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "edge_sharpener/mesh_distance.h"
+#include "mesh_distance.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "fuzz_fail.h"
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "edge_sharpener/mesh_distance.h"
+#include "mesh_distance.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "test_meshes/shapes.h"
 // (keep after the mesh headers)

@@ -8,7 +8,7 @@
 #include <vcg/complex/algorithms/clean.h>
 
 #include "edge_sharpener/edge_sharpener.h"
-#include "edge_sharpener/mesh_distance.h"
+#include "mesh_distance.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "test_meshes/shapes.h"
 

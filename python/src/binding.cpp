@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "edge_sharpener/edge_sharpener.h"
-#include "edge_sharpener/mesh_distance.h"
+#include "mesh_distance.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "edge_sharpener/option_table.h"
 #include "report_json.h"

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "edge_sharpener/edge_sharpener.h"
-#include "edge_sharpener/mesh_distance.h"
+#include "mesh_distance.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "reliability/invariants.h"
 #include "test_meshes/shapes.h"

@@ -45,29 +45,24 @@ EdgeBuckets bucketFaceEdges(MeshType &m) {
   b.start.assign(nv + 2, 0);
   if (nv == 0 || nf == 0) return b;
   const auto *v0 = &m.vert[0];
+  // Visits every face edge as (face, side, one end, other end).
+  const auto forEachFaceEdge = [&](auto &&visit) {
+    for (std::size_t f = 0; f < nf; ++f) {
+      const auto &face = m.face[f];
+      if (face.IsD()) continue;
+      for (int i = 0; i < 3; ++i)
+        visit(f, i, std::uint32_t(face.cV(i) - v0), std::uint32_t(face.cV((i + 1) % 3) - v0));
+    }
+  };
   // Counts land in start[lo + 2] so that, after the prefix sum, start[lo + 1]
   // is the fill cursor of bucket lo and ends as the start of bucket lo + 1.
-  for (std::size_t f = 0; f < nf; ++f) {
-    const auto &face = m.face[f];
-    if (face.IsD()) continue;
-    for (int i = 0; i < 3; ++i) {
-      const std::uint32_t a = std::uint32_t(face.cV(i) - v0);
-      const std::uint32_t c = std::uint32_t(face.cV((i + 1) % 3) - v0);
-      ++b.start[std::min(a, c) + 2];
-    }
-  }
+  forEachFaceEdge(
+      [&](std::size_t, int, std::uint32_t a, std::uint32_t c) { ++b.start[std::min(a, c) + 2]; });
   for (std::size_t v = 2; v < nv + 2; ++v) b.start[v] += b.start[v - 1];
   b.edges.resize(b.start[nv + 1]);
-  for (std::size_t f = 0; f < nf; ++f) {
-    const auto &face = m.face[f];
-    if (face.IsD()) continue;
-    for (int i = 0; i < 3; ++i) {
-      const std::uint32_t a = std::uint32_t(face.cV(i) - v0);
-      const std::uint32_t c = std::uint32_t(face.cV((i + 1) % 3) - v0);
-      b.edges[b.start[std::min(a, c) + 1]++] =
-          BucketedEdge{std::max(a, c), std::uint32_t(3 * f + i)};
-    }
-  }
+  forEachFaceEdge([&](std::size_t f, int i, std::uint32_t a, std::uint32_t c) {
+    b.edges[b.start[std::min(a, c) + 1]++] = BucketedEdge{std::max(a, c), std::uint32_t(3 * f + i)};
+  });
   b.start.pop_back();
   // Filled in id order; sorting each small bucket by the higher vertex
   // groups the faces of each edge.
