@@ -9,30 +9,17 @@ if(NOT TARGET plugin_test_tool)
 endif()
 
 set(_es_modern_env
-  "ES_BUILD_DIR=${CMAKE_BINARY_DIR};ES_SOURCE_DIR=${PROJECT_SOURCE_DIR};ES_TEST_TOOL=$<TARGET_FILE:plugin_test_tool>;ES_CLI=$<$<TARGET_EXISTS:edge-sharpener>:$<TARGET_FILE:edge-sharpener>>")
+  "ES_BUILD_DIR=${CMAKE_BINARY_DIR}" "ES_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
+  "ES_TEST_TOOL=$<TARGET_FILE:plugin_test_tool>"
+  "ES_CLI=$<$<TARGET_EXISTS:edge-sharpener>:$<TARGET_FILE:edge-sharpener>>")
 
-# edge_sharpener_plugin_modern_test(NAME SCRIPT TIMEOUT_SECONDS [RESOURCE_LOCK...]).
-# All of them lock the trixie root: the .deb test installs into its plugin folder.
-function(edge_sharpener_plugin_modern_test name script timeout)
-  add_test(NAME plugin_modern.${name} COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/plugin_modern/${script}")
-  set_tests_properties(plugin_modern.${name} PROPERTIES
-    TIMEOUT ${timeout}
-    LABELS plugin_modern
-    RESOURCE_LOCK "trixie_root;${ARGN}"
-    ENVIRONMENT "${_es_modern_env};ES_WORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/plugin_modern/${name}")
-  if(name STREQUAL "prepare")
-    set_tests_properties(plugin_modern.${name} PROPERTIES FIXTURES_SETUP plugin_modern)
-  else()
-    set_tests_properties(plugin_modern.${name} PROPERTIES FIXTURES_REQUIRED plugin_modern)
-  endif()
-endfunction()
-
-edge_sharpener_plugin_modern_test(prepare prepare.sh 1800)
-edge_sharpener_plugin_modern_test(releases releases.sh 120)
-edge_sharpener_plugin_modern_test(scripts scripts.sh 600)
-edge_sharpener_plugin_modern_test(matches_cli matches_cli.sh 900)
-edge_sharpener_plugin_modern_test(bad_input bad_input.sh 300)
+# All of them lock the trixie root: the .deb test installs into its plugin folder. The
+# fixture plugin_modern.prepare comes before the others.
+edge_sharpener_script_tests(plugin_modern prepare 1800 ENVIRONMENT ${_es_modern_env}
+  PROPERTIES RESOURCE_LOCK trixie_root FIXTURES_SETUP plugin_modern)
+edge_sharpener_script_tests(plugin_modern
+  releases 120  scripts 600  matches_cli 900  bad_input 300  gui 600  deb_trixie 300  deb_bookworm 300
+  ENVIRONMENT ${_es_modern_env}
+  PROPERTIES RESOURCE_LOCK trixie_root FIXTURES_REQUIRED plugin_modern)
 # xvfb-run -a in the root shares /tmp/.X11-unix with the host's MeshLab tests.
-edge_sharpener_plugin_modern_test(gui gui.sh 600 meshlab_xvfb)
-edge_sharpener_plugin_modern_test(deb_trixie deb_trixie.sh 300)
-edge_sharpener_plugin_modern_test(deb_bookworm deb_bookworm.sh 300 meshlab_xvfb)
+set_property(TEST plugin_modern.gui plugin_modern.deb_bookworm APPEND PROPERTY RESOURCE_LOCK meshlab_xvfb)

@@ -16,16 +16,8 @@ if(TARGET edge-sharpener)
   set(_es_cli "$<TARGET_FILE:edge-sharpener>")
 endif()
 
-# edge_sharpener_plugin_test(NAME SCRIPT TIMEOUT_SECONDS). Without filter_edge_sharpener/
-# (no MeshLab) the scripts skip if MeshLab is really absent, and fail otherwise.
-function(edge_sharpener_plugin_test name script timeout)
-  edge_sharpener_meshlab_script_test(plugin ${name} ${script} ${timeout}
-    "ES_TEST_TOOL=$<TARGET_FILE:plugin_test_tool>;ES_CLI=${_es_cli};ES_MENU_TOOL=${_es_menu_tool}")
-endfunction()
-
-edge_sharpener_plugin_test(listing listing.sh 120)
-edge_sharpener_plugin_test(sharpen_matches_cli sharpen_matches_cli.sh 900)
-edge_sharpener_plugin_test(detect detect.sh 600)
-edge_sharpener_plugin_test(pipeline_hausdorff pipeline_hausdorff.sh 900)
-edge_sharpener_plugin_test(bad_input bad_input.sh 300)
-edge_sharpener_plugin_test(gui gui.sh 600)
+# Without filter_edge_sharpener/ (no MeshLab) the scripts skip if MeshLab is really absent,
+# and fail otherwise.
+edge_sharpener_meshlab_script_tests(plugin
+  listing 120  sharpen_matches_cli 900  detect 600  pipeline_hausdorff 900  bad_input 300  gui 600
+  ENVIRONMENT "ES_TEST_TOOL=$<TARGET_FILE:plugin_test_tool>" "ES_CLI=${_es_cli}" "ES_MENU_TOOL=${_es_menu_tool}")

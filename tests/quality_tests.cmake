@@ -19,14 +19,7 @@
 # The full benchmark (docs/results.md) is scripts/bench-quality.sh, not a test.
 # All exit 77 (skipped) when MeshLab or python3 is not installed, fandisk_targets also without
 # ../shared. Run: ctest -L quality
-function(edge_sharpener_quality_test name script timeout)
-  edge_sharpener_meshlab_script_test(quality ${name} ${script} ${timeout}
-    "ES_BUILD_DIR=${CMAKE_BINARY_DIR}")
-endfunction()
-
-edge_sharpener_quality_test(fast_subset fast_subset.sh 900)
-edge_sharpener_quality_test(hausdorff_crosscheck hausdorff_crosscheck.sh 600)
-edge_sharpener_quality_test(hausdorff_meshlab_mode hausdorff_meshlab_mode.sh 600)
-edge_sharpener_quality_test(families_subset families_subset.sh 900)
-edge_sharpener_quality_test(fandisk_targets fandisk_targets.sh 900)
-edge_sharpener_quality_test(cad_as_is cad_as_is.sh 600)
+edge_sharpener_meshlab_script_tests(quality
+  fast_subset 900  hausdorff_crosscheck 600  hausdorff_meshlab_mode 600  families_subset 900
+  fandisk_targets 900  cad_as_is 600
+  ENVIRONMENT "ES_BUILD_DIR=${CMAKE_BINARY_DIR}")

@@ -6,16 +6,9 @@
 #   ES_CLI             edge-sharpener CLI (empty when not built)
 #   ES_SOURCE_DIR      source tree;  ES_WORK_DIR  scratch dir of this test (wiped)
 # Exit status 77 = skipped: only when MeshLab is not installed at all.
-set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 
 SKIP=77
-TEST_NAME=${0##*/}
-TEST_NAME=${TEST_NAME%.sh}
-log() { printf '[%s] %s\n' "$TEST_NAME" "$*"; }
-fail() {
-  printf '[%s] FAIL: %s\n' "$TEST_NAME" "$*" >&2
-  exit 1
-}
 
 if ! command -v meshlabserver >/dev/null 2>&1 || ! command -v meshlab >/dev/null 2>&1; then
   log "MeshLab is not installed (no meshlab/meshlabserver in PATH): skipped"
@@ -58,26 +51,6 @@ run_server() {
   fi
 }
 
-# The chamfered (marching-cubes) meshes to test on: the project's generated
-# ones when present, plus an L-shaped block resampled by MeshLab itself.
-chamfered_inputs() {
-  local f
-  for f in "$ES_SOURCE_DIR"/test_meshes/generated/*_mc*.ply; do
-    [[ -f $f ]] && echo "$f"
-  done
-  make_lblock_mc >&2
-  echo "$ES_WORK_DIR/lblock_mc.ply"
-}
-
-# lblock_mc.ply: an L-shaped block (sharp convex and concave edges, corners),
-# resampled with "Uniform Mesh Resampling" so that every sharp edge is chamfered.
-make_lblock_mc() {
-  [[ -f $ES_WORK_DIR/lblock_mc.ply ]] && return 0
-  "$ES_TEST_TOOL" make-lblock "$ES_WORK_DIR/lblock.ply"
-  run_server lblock_mc -i "$ES_WORK_DIR/lblock.ply" -o "$ES_WORK_DIR/lblock_mc.ply" \
-    -s "$ES_SOURCE_DIR/tests/plugin/resample.mlx"
-  ((rc == 0)) && [[ -f $ES_WORK_DIR/lblock_mc.ply ]] || {
-    cat lblock_mc.out >&2
-    fail "could not resample the L-block (status $rc)"
-  }
-}
+# The L-block of chamfered_inputs, resampled by meshlabserver (tests/lib/common.sh).
+LBLOCK=lblock_mc
+LBLOCK_RUN=run_server

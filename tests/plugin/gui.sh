@@ -23,7 +23,7 @@ index=$(grep -nxF "$FILTER" smoothing_menu.txt | cut -d: -f1) || fail "'$FILTER'
 colorize_index=0
 while [[ ${PARAMS[$colorize_index]} != colorize ]]; do colorize_index=$((colorize_index + 1)); done
 
-make_lblock_mc
+make_lblock
 for attempt in 1 2; do  # a second, clean MeshLab if the first one loses the race with Xvfb
   rc=0
   GUI="$GUI" INPUT="$ES_WORK_DIR/lblock_mc.ply" FILTER="$FILTER" MENU_INDEX=$((index - 1)) \

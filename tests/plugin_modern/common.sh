@@ -6,15 +6,7 @@
 #   ES_BUILD_DIR   main build dir (meshlab-<release>/ inside)
 #   ES_TEST_TOOL   plugin_test_tool (host)     ES_CLI   edge-sharpener CLI (host)
 #   ES_SOURCE_DIR  source tree;  ES_WORK_DIR  scratch dir of this test (wiped)
-set -euo pipefail
-
-TEST_NAME=${0##*/}
-TEST_NAME=${TEST_NAME%.sh}
-log() { printf '[%s] %s\n' "$TEST_NAME" "$*"; }
-fail() {
-  printf '[%s] FAIL: %s\n' "$TEST_NAME" "$*" >&2
-  exit 1
-}
+source "$(dirname "${BASH_SOURCE[0]}")/../lib/common.sh"
 
 : "${ES_BUILD_DIR:?}" "${ES_TEST_TOOL:?}" "${ES_SOURCE_DIR:?}" "${ES_WORK_DIR:?}"
 MODERN_BUILD="$ES_BUILD_DIR/meshlab-2022.02"
@@ -51,22 +43,6 @@ run_filter() {
   grep -q '^Loaded [0-9]* plugins' "$name.out" || { cat "$name.out" >&2; fail "$name: the runner did not start"; }
 }
 
-# lblock_umr.ply: the L-shaped block of plugin_test_tool resampled by stock
-# MeshLab 2022.02 "Uniform Mesh Resampling" (every sharp edge chamfered).
-make_lblock_umr() {
-  [[ -f lblock_umr.ply ]] && return 0
-  "$ES_TEST_TOOL" make-lblock lblock.ply
-  run_filter lblock_umr -i "$ES_WORK_DIR/lblock.ply" -o "$ES_WORK_DIR/lblock_umr.ply" \
-    -s "$ES_SOURCE_DIR/tests/plugin/resample.mlx"
-  ((rc == 0)) && [[ -f lblock_umr.ply ]] || { cat lblock_umr.out >&2; fail "Uniform Mesh Resampling failed ($rc)"; }
-}
-
-# The chamfered meshes: the project's generated marching-cubes ones and lblock_umr.ply.
-chamfered_inputs() {
-  local f
-  for f in "$ES_SOURCE_DIR"/test_meshes/generated/*_mc*.ply; do
-    [[ -f $f ]] && echo "$f"
-  done
-  make_lblock_umr >&2
-  echo "$ES_WORK_DIR/lblock_umr.ply"
-}
+# The L-block of chamfered_inputs, resampled by stock MeshLab 2022.02 (tests/lib/common.sh).
+LBLOCK=lblock_umr
+LBLOCK_RUN=run_filter

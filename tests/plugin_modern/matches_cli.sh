@@ -7,13 +7,7 @@
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [[ -x ${ES_CLI:-} ]] || fail "the edge-sharpener CLI is not built (ES_CLI='${ES_CLI:-}')"
 
-sed 's/name="colorize" type="RichBool" value="false"/name="colorize" type="RichBool" value="true"/' \
-  "$SCRIPTS/sharpen.mlx" >sharpen_colorize.mlx
-grep -q 'name="colorize" type="RichBool" value="true"' sharpen_colorize.mlx || fail "cannot derive sharpen_colorize.mlx"
-sed -e 's/name="method" type="RichEnum" value="0"/name="method" type="RichEnum" value="1"/' \
-  -e 's/name="strictPlaneGuard" type="RichBool" value="false"/name="strictPlaneGuard" type="RichBool" value="true"/' \
-  "$SCRIPTS/sharpen.mlx" >sharpen_strict.mlx
-[[ $(grep -c 'value="1"\|value="true"' sharpen_strict.mlx) -ge 3 ]] || fail "cannot derive sharpen_strict.mlx"
+sharpen_variants  # sharpen_colorize.mlx, sharpen_strict.mlx
 
 # same NAME CLI-ARGS -- COMPARE-ARGS: the runner's NAME.plugin.ply vs the CLI's NAME.cli.ply.
 same() {

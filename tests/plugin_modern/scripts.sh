@@ -5,7 +5,7 @@
 # original drops, the max does not grow).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-make_lblock_umr
+make_lblock
 for script in sharpen detect; do
   run_filter "$script" -i "$ES_WORK_DIR/lblock_umr.ply" -o "$ES_WORK_DIR/$script.ply" \
     -s "$SCRIPTS/$script.mlx" -l "$ES_WORK_DIR/$script.log"
