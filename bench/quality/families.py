@@ -58,6 +58,12 @@ def _fx(x):
     return "–" if not math.isfinite(x) else f"×{x:.2f}"
 
 
+def before_after(before, after, fmt=lambda x: f"{x:.3g}"):
+    """The "max before -> after | RMS before -> after" cells of a worse-case row."""
+    return (f"{fmt(before['max'])} -> {fmt(after['max'])} | "
+            f"{fmt(before['rms'])} -> {fmt(after['rms'])}")
+
+
 def family_stats(cases, method, mult):
     """Geometric means of the max and RMS reduction factors (references with sharp features),
     worse count, outputs measured and runs that failed (refusals included)."""
@@ -121,10 +127,8 @@ def worse_list(cases, mult, causes):
             r = _run(c, method, mult)
             if r is None or r["status"] != "ok" or not is_worse(c["before"], r["after"]):
                 continue
-            b, a = c["before"], r["after"]
             rows.append(f"| {c['half']} | {c['input']} {c['resolution']} | {c['model']} | {label} | "
-                        f"{b['max']:.3g} -> {a['max']:.3g} | {b['rms']:.3g} -> {a['rms']:.3g} | "
-                        f"{_cause(c, method, causes)} |")
+                        f"{before_after(c['before'], r['after'])} | {_cause(c, method, causes)} |")
     if not rows:
         return "No output came out worse."
     return ("| half | input | model | method | max before -> after | RMS before -> after | "

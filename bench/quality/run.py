@@ -319,13 +319,10 @@ def make_input(server, model, spec, cache, refresh, timeout, tools_for_local=Non
     key = f"{model.name}__{spec.key}"
     if spec.kind in LOCAL_KINDS:
         return make_local_input(tools_for_local, model, spec, cache, refresh, timeout, key)
+    hit = cached_info(cache, key, refresh)
+    if hit is not None:
+        return hit
     out = os.path.join(cache, "inputs", key + ".ply")
-    status_path = os.path.join(cache, "inputs", key + ".json")
-    if not refresh and os.path.exists(status_path):
-        with open(status_path) as f:
-            info = json.load(f)
-        if info["status"] != "ok" or os.path.exists(out):
-            return (out if info["status"] == "ok" else None), info
     if server is None:
         return None, {"status": "skipped", "why": "meshlabserver not available"}
     inputs = [model.source, model.source] if spec.kind == "csg" else [model.source]
@@ -339,9 +336,7 @@ def make_input(server, model, spec, cache, refresh, timeout, tools_for_local=Non
         log(f"{key}: MeshLab step failed ({why}); skipped")
     else:
         log(f"{key}: made in {seconds:.1f} s")
-    os.makedirs(os.path.dirname(status_path), exist_ok=True)
-    with open(status_path, "w") as f:
-        json.dump(info, f)
+    store_info(cache, key, info)
     return (out if ok else None), info
 
 
@@ -412,6 +407,17 @@ def make_peer_output(server, model, spec, in_path, cache, refresh, timeout):
     return (out if ok else None), info
 
 
+def measure_run(tools, out, reference, timeout, row):
+    """Measures a run's output against the reference into its row; False when that failed."""
+    d, err = measure(tools, out, reference, timeout)
+    if d is None:
+        row.update(status="measure failed", why=err)
+        return False
+    row["after"] = d
+    row["status"] = "ok"
+    return True
+
+
 def measure_peer(tools, model, in_path, peer, timeout):
     """The peer's row, shaped like a sharpener run."""
     out, info = peer
@@ -420,12 +426,7 @@ def measure_peer(tools, model, in_path, peer, timeout):
         row.update(status="peer failed", why=info.get("why", info["status"]))
         return row
     row["seconds"] = info.get("seconds")
-    d, err = measure(tools, out, model.reference, timeout)
-    if d is None:
-        row.update(status="measure failed", why=err)
-        return row
-    row["after"] = d
-    row["status"] = "ok"
+    measure_run(tools, out, model.reference, timeout, row)
     return row
 
 
@@ -445,12 +446,8 @@ def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cach
     row["moved"] = rep["placement"]["moved"]
     row["fallbacks"] = rep["placement"]["fallbacks"]
     row["geometry_changed"] = rep.get("geometry_changed", True)
-    d, err = measure(tools, out, model.reference, timeout)
-    if d is None:
-        row.update(status="measure failed", why=err)
+    if not measure_run(tools, out, model.reference, timeout, row):
         return row
-    row["after"] = d
-    row["status"] = "ok"
     if spec.kind == "asis" or model.name in ("sphere", "rocker-arm"):
         # How much the sharpener changed its input (unchanged-ness of smooth meshes).
         c, _ = measure(tools, out, in_path, timeout)

@@ -13,13 +13,8 @@ variant, and smoothed by MeshLab's UnSharp Mask Geometry (the peer). Asserted:
   > 1%) is no larger than measured then. A method that gets better passes; update MEASURED
   when it does, so that the floors follow.
 """
-import json
-import os
-import sys
-
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bench",
-                                "quality"))
-import families  # noqa: E402
+import checks  # first: puts bench/quality on sys.path
+import families
 
 MARGIN = 0.9
 MULTIPLIER = 2.0
@@ -42,8 +37,7 @@ SHAPES = 3
 
 
 def main():
-    with open(sys.argv[1]) as f:
-        results = json.load(f)
+    results = checks.load_results()
     failures = []
     groups = {}
     for c in results["cases"]:
@@ -79,10 +73,7 @@ def main():
             if worse > mworse:
                 failures.append(f"{key} {method}: {worse} outputs worse, at most {mworse} "
                                 "were when measured")
-    if failures:
-        print("FAIL:\n  " + "\n  ".join(failures), file=sys.stderr)
-        sys.exit(1)
-    print("quality families subset: all assertions hold")
+    checks.finish(failures, "quality families subset: all assertions hold")
 
 
 if __name__ == "__main__":

@@ -13,57 +13,34 @@ MeshLab prints (at most 0.04% apart). A larger difference means the sampling dri
 MeshLab's.
 """
 import os
-import subprocess
-import sys
 
-SOURCE = os.environ["ES_SOURCE_DIR"]
-BUILD = os.environ["ES_BUILD_DIR"]
-WORK = os.environ["ES_WORK_DIR"]
-sys.path.insert(0, os.path.join(SOURCE, "bench", "quality"))
-import meshlab  # noqa: E402
-import run  # noqa: E402
+import checks  # first: puts bench/quality on sys.path
+import meshlab
+import run
 
 SAMPLES = 100000  # the benchmark's count (run.DISTANCE_SAMPLES)
 TOLERANCE = 0.05
 SHAPES = ("lblock_tilted", "cylinder_block", "pyramid")
 
 
-def rel(a, b):
-    return abs(a - b) / max(abs(b), 1e-30)
-
-
 def meshlab_both_ways(server, a, b, diag, tag):
     """[(min, max, mean, RMS) of A -> B, of B -> A] from MeshLab's filter, or None."""
     filters = [meshlab.hausdorff(s, t, SAMPLES, 0.1 * diag, diag) for s, t in ((0, 1), (1, 0))]
-    # A Hausdorff abort on one sample count is a known MeshLab bug: retry once with another.
-    for attempt, n in enumerate((SAMPLES, SAMPLES + 1357)):
-        text = meshlab.script(*filters).replace(f'value="{SAMPLES}"', f'value="{n}"')
-        wd = os.path.join(WORK, f"{tag}-{attempt}")
-        ok, _, why = server.run([a, b], None, text, wd, 300)
-        if ok:
-            rows = meshlab.Server.hausdorff_results(os.path.join(wd, "log.txt"))
-            if len(rows) == 2:
-                return rows
-        print(f"  {tag}: MeshLab attempt {attempt + 1} failed: {why}")
-    return None
+    return checks.hausdorff_both_ways(server, a, b, filters, SAMPLES, tag)
 
 
 def main():
-    tools = run.Tools(BUILD)
-    server = meshlab.Server(os.path.join(os.environ["ES_MESHLAB_PREFIX"], "bin", "meshlabserver"),
-                            os.path.join(WORK, "home"))
-    subprocess.run([tools.generator, WORK, "--cells", "0.01", "--shapes", ",".join(SHAPES)],
-                   check=True, stdout=subprocess.DEVNULL)
+    tools, server, work = checks.meshlab_setup(SHAPES)
     pairs = []
     for shape in SHAPES:
-        ref = os.path.join(WORK, f"{shape}_reference.ply")
-        pairs.append((f"{shape} (project MC 1%)", os.path.join(WORK, f"{shape}_mc1.ply"), ref))
+        ref = os.path.join(work, f"{shape}_reference.ply")
+        pairs.append((f"{shape} (project MC 1%)", os.path.join(work, f"{shape}_mc1.ply"), ref))
     # One pair made by MeshLab's own marching cubes too.
-    ref = os.path.join(WORK, "lblock_tilted_reference.ply")
-    umr = os.path.join(WORK, "lblock_tilted_umr1.ply")
+    ref = os.path.join(work, "lblock_tilted_reference.ply")
+    umr = os.path.join(work, "lblock_tilted_umr1.ply")
     diag = run.diagonal(tools, ref)
     ok, _, why = server.run([ref], umr, meshlab.script(meshlab.uniform_resampling(0.01 * diag, diag)),
-                            os.path.join(WORK, "umr"), 300)
+                            os.path.join(work, "umr"), 300)
     if ok:
         pairs.append(("lblock_tilted (MeshLab UMR 1%)", umr, ref))
     else:
@@ -82,16 +59,9 @@ def main():
         for side, ml in (("forward", rows[0]), ("backward", rows[1])):
             o = ours[side]
             for what, x, y in (("max", o["max"], ml[1]), ("RMS", o["rms"], ml[3])):
-                r = rel(x, y)
-                print(f"  {label:32s} {side:8s} {what:4s} mesh-distance {x:.6g}  MeshLab {y:.6g}  "
-                      f"difference {100 * r:.2f}% (tolerance {100 * TOLERANCE:.0f}%)")
-                if r > TOLERANCE:
-                    failures.append(f"{label} {side} {what}: {x:.6g} vs MeshLab {y:.6g} "
-                                    f"({100 * r:.2f}% > {100 * TOLERANCE:.0f}%)")
-    if failures:
-        print("FAIL:\n  " + "\n  ".join(failures), file=sys.stderr)
-        sys.exit(1)
-    print("mesh-distance --sampling meshlab agrees with MeshLab's Hausdorff Distance")
+                checks.agree(failures, label, side, what, x, y, TOLERANCE, widths=(32, 4))
+    checks.finish(failures,
+                  "mesh-distance --sampling meshlab agrees with MeshLab's Hausdorff Distance")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,76 @@
+"""Shared parts of the quality tests' Python checkers (tests/quality/*.py).
+
+The checkers run as scripts (tests/quality/*.sh), so this directory is first on sys.path and
+`import checks` finds this module; importing it puts bench/quality there too, for the
+benchmark's modules (run, meshlab, families). Environment from tests/quality_tests.cmake:
+ES_BUILD_DIR, ES_MESHLAB_PREFIX, ES_WORK_DIR (scratch).
+"""
+import json
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bench",
+                                "quality"))
+
+
+def load_results():
+    """The results JSON of bench/quality/run.py named by the first argument."""
+    with open(sys.argv[1]) as f:
+        return json.load(f)
+
+
+def finish(failures, passed):
+    """Prints the failures and exits 1 when there are any, else prints `passed`."""
+    if failures:
+        print("FAIL:\n  " + "\n  ".join(failures), file=sys.stderr)
+        sys.exit(1)
+    print(passed)
+
+
+def rel(a, b):
+    return abs(a - b) / max(abs(b), 1e-30)
+
+
+# --------------------------------------------------------------------------- MeshLab cross-checks
+def meshlab_setup(shapes):
+    """(run.Tools, meshlab.Server, work directory) with the generated shapes `shapes` (exact
+    references and the project's marching cubes at 1% cells) written to the work directory."""
+    import meshlab
+    import run
+    work = os.environ["ES_WORK_DIR"]
+    tools = run.Tools(os.environ["ES_BUILD_DIR"])
+    server = meshlab.Server(os.path.join(os.environ["ES_MESHLAB_PREFIX"], "bin", "meshlabserver"),
+                            os.path.join(work, "home"))
+    subprocess.run([tools.generator, work, "--cells", "0.01", "--shapes", ",".join(shapes)],
+                   check=True, stdout=subprocess.DEVNULL)
+    return tools, server, work
+
+
+def hausdorff_both_ways(server, a, b, filters, samples, tag):
+    """[(min, max, mean, RMS) of A -> B, of B -> A] from MeshLab's Hausdorff Distance filters
+    `filters` (sampling `samples` points) run on meshes A and B, or None. The run's directory
+    in ES_WORK_DIR is named after `tag`."""
+    import meshlab
+    # A Hausdorff abort on one sample count is a known MeshLab bug: retry once with another.
+    for attempt, n in enumerate((samples, samples + 1357)):
+        text = meshlab.script(*filters).replace(f'value="{samples}"', f'value="{n}"')
+        wd = os.path.join(os.environ["ES_WORK_DIR"], f"{tag.replace(' ', '-')}-{attempt}")
+        ok, _, why = server.run([a, b], None, text, wd, 300)
+        if ok:
+            rows = meshlab.Server.hausdorff_results(os.path.join(wd, "log.txt"))
+            if len(rows) == 2:
+                return rows
+        print(f"  {tag}: MeshLab attempt {attempt + 1} failed: {why}")
+    return None
+
+
+def agree(failures, label, side, what, ours, theirs, tol, widths=(15, 28)):
+    """Prints mesh-distance's figure against MeshLab's; a failure when they differ by more
+    than `tol` (relative). `widths`: of the label and `what` columns."""
+    r = rel(ours, theirs)
+    print(f"  {label:{widths[0]}s} {side:8s} {what:{widths[1]}s} mesh-distance {ours:.6g}  "
+          f"MeshLab {theirs:.6g}  difference {100 * r:.2f}% (tolerance {100 * tol:.0f}%)")
+    if r > tol:
+        failures.append(f"{label} {side} {what}: {ours:.6g} vs MeshLab {theirs:.6g} "
+                        f"({100 * r:.2f}% > {100 * tol:.0f}%)")
