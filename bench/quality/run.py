@@ -194,9 +194,14 @@ def run_json(cmd, timeout):
         return None, seconds, f"bad JSON: {e}"
 
 
-def measure(tools, mesh, reference, timeout, samples=DISTANCE_SAMPLES):
-    d, _, err = run_json([tools.distance, mesh, reference, "--json", *_distance_sampling,
-                          "--samples", str(samples)], timeout)
+def measure(tools, mesh, reference, timeout, samples=None):
+    """Two-sided distance. DISTANCE_SAMPLES in MeshLab's mode; the uniform mode keeps
+    mesh-distance's own default, which the floors of the older tests were measured with."""
+    if samples is None and _distance_sampling[1] == "meshlab":
+        samples = DISTANCE_SAMPLES
+    count = ["--samples", str(samples)] if samples is not None else []
+    d, _, err = run_json([tools.distance, mesh, reference, "--json", *_distance_sampling, *count],
+                         timeout)
     if d is None:
         return None, err
     return {"max": d["symmetric"]["max_percent"], "mean": d["symmetric"]["mean_percent"],
@@ -594,7 +599,9 @@ def main():
                 "methods": list(VARIANTS), "default_multiplier": DEFAULT_MULTIPLIER,
                 "sweep": list(SWEEP), "notes": notes, "diagonals": diags, "halves": halves,
                 "split_rule": load_split()["rule"],
-                "distance_sampling": [*_distance_sampling, "--samples", str(DISTANCE_SAMPLES)],
+                "distance_sampling": [*_distance_sampling] + (
+                    ["--samples", str(DISTANCE_SAMPLES)] if _distance_sampling[1] == "meshlab"
+                    else []),
                 "cases": cases, "git": _git_describe()}
 
     def save(results):

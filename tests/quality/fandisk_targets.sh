@@ -10,5 +10,6 @@ if [[ ! -f $shared/fandisk.off ]]; then
 fi
 "$PYTHON" "$ES_SOURCE_DIR/bench/quality/run.py" --build "$ES_BUILD_DIR" --shared "$shared" \
   --models fandisk --inputs umr --cache "$ES_WORK_DIR/cache" --results "$ES_WORK_DIR/results.json" \
-  --no-report --jobs 2
+  --no-report --jobs 2 \
+  --distance-sampling uniform --no-peer  # the sampling and methods its targets were measured with
 "$PYTHON" "$ES_SOURCE_DIR/tests/quality/check_fandisk_targets.py" "$ES_WORK_DIR/results.json"
