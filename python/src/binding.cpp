@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "edge_sharpener/edge_sharpener.h"
-#include "mesh_distance.h"
-#include "edge_sharpener/util/mesh_types.h"
 #include "edge_sharpener/option_table.h"
+#include "edge_sharpener/util/mesh_types.h"
+#include "mesh_distance.h"
 #include "report_json.h"
 
 namespace py = pybind11;
@@ -473,6 +473,7 @@ py::dict distanceAs(const py::array &av, const py::array &af, const py::array &b
   }
   py::dict out, sampled, symmetric;
   out["reference_diagonal"] = r.referenceDiagonal;
+  out["sampling"] = es::distanceSamplingName(options.sampling);
   out["face_samples"] = options.faceSamples;
   out["seed"] = options.seed;
   sampled["vertices"] = options.sampleVertices;
@@ -493,13 +494,21 @@ py::dict distanceAs(const py::array &av, const py::array &af, const py::array &b
 
 py::dict meshDistance(const py::object &aVertices, const py::object &aFaces,
                       const py::object &bVertices, const py::object &bFaces, long long samples,
-                      long long seed, bool sampleVertices, bool sampleEdges) {
+                      const py::object &seedArg, bool sampleVertices, bool sampleEdges,
+                      const std::string &sampling) {
   if (samples < 1 || samples > 1000000000)
     throw es::InputError("samples must be in [1, 1000000000]");
+  if (sampling != "uniform" && sampling != "meshlab")
+    throw es::InputError("sampling must be 'uniform' or 'meshlab'");
+  // As mesh-distance: MeshLab's mode starts where a fresh MeshLab's generator does.
+  const long long seed = seedArg.is_none() ? (sampling == "meshlab" ? es::kMeshLabSeed : 1)
+                                           : seedArg.cast<long long>();
   if (seed < 0 || seed > UINT_MAX) throw es::InputError("seed must be in [0, 2^32 - 1]");
   const py::array av = asArray(aVertices, "a_vertices"), af = asArray(aFaces, "a_faces");
   const py::array bv = asArray(bVertices, "b_vertices"), bf = asArray(bFaces, "b_faces");
   es::DistanceOptions options;
+  options.sampling =
+      sampling == "meshlab" ? es::DistanceSampling::meshlab : es::DistanceSampling::uniform;
   options.faceSamples = std::size_t(samples);
   options.seed = unsigned(seed);
   options.sampleVertices = sampleVertices;
@@ -562,8 +571,8 @@ PYBIND11_MODULE(_edge_sharpener, m) {
           "") +
       "\n" + arraysDoc + options;
   static const std::string distanceDoc =
-      "mesh_distance(a_vertices, a_faces, b_vertices, b_faces, *, samples=200000, seed=1, "
-      "sample_vertices=True, sample_edges=True) -> dict\n\n" +
+      "mesh_distance(a_vertices, a_faces, b_vertices, b_faces, *, samples=200000, seed=None, "
+      "sample_vertices=True, sample_edges=True, sampling='uniform') -> dict\n\n" +
       wrapped(
           "Two-sided (Metro) surface distance between mesh A and the reference mesh B, as "
           "the mesh-distance tool's --json: 'forward' (A sampled, measured against B), "
@@ -572,7 +581,9 @@ PYBIND11_MODULE(_edge_sharpener, m) {
           "spread over each mesh's faces by area (edges get a quarter as many); a fixed "
           "`seed` makes the result deterministic. Both meshes are measured in single "
           "precision when both vertex arrays are float32 (as mesh-distance does), else in "
-          "double precision. Raises InputError on bad input.",
+          "double precision. sampling='meshlab' spreads the samples as MeshLab's Hausdorff "
+          "Distance filter does (seed None: 5489, a fresh MeshLab's; 'uniform': 1); the dict "
+          "names the mode in 'sampling'. Raises InputError on bad input.",
           "");
 
   m.def("sharpen", &sharpen, sharpenDoc.c_str(), py::arg("vertices"), py::arg("faces"),
@@ -581,8 +592,9 @@ PYBIND11_MODULE(_edge_sharpener, m) {
         py::arg("progress") = py::none());
   m.def("mesh_distance", &meshDistance, distanceDoc.c_str(), py::arg("a_vertices"),
         py::arg("a_faces"), py::arg("b_vertices"), py::arg("b_faces"), py::kw_only(),
-        py::arg("samples") = 200000, py::arg("seed") = 1, py::arg("sample_vertices") = true,
-        py::arg("sample_edges") = true);
+        py::arg("samples") = 200000, py::arg("seed") = py::none(),
+        py::arg("sample_vertices") = true, py::arg("sample_edges") = true,
+        py::arg("sampling") = "uniform");
 
   m.attr("OPTIONS") = optionRecords();
   m.attr("FACE_LABELS") = py::make_tuple("other", "smooth_region", "chamfer", "corner");

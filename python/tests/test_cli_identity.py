@@ -73,15 +73,16 @@ def test_sharpen_colorize_matches_cli(cli, tmp_path):
         assert np.array_equal(report["colors"][key], expected)
 
 
+@pytest.mark.parametrize("sampling", ["uniform", "meshlab"])
 @pytest.mark.parametrize("name", ["cube", "lblock"])
-def test_mesh_distance_matches_cli(name, tmp_path):
+def test_mesh_distance_matches_cli(name, sampling, tmp_path):
     measured, reference = sample(f"{name}_mc2"), sample(f"{name}_reference")
     done = subprocess.run([DISTANCE_CLI, str(SAMPLES / f"{name}_mc2.ply"),
                            str(SAMPLES / f"{name}_reference.ply"), "--json", "--samples", "20000",
-                           "--seed", "7"], check=True, capture_output=True, text=True)
+                           "--sampling", sampling], check=True, capture_output=True, text=True)
     expected = json.loads(done.stdout)
     got = es.mesh_distance(measured["vertices"], measured["faces"], reference["vertices"],
-                           reference["faces"], samples=20000, seed=7)
+                           reference["faces"], samples=20000, sampling=sampling)
     for field in ("a", "b"):
         expected.pop(field)
     assert got == expected
