@@ -14,9 +14,9 @@
 
 #include "capacity_hint.h"
 #include "edge_sharpener/edge_sharpener.h"
-#include "mesh_distance.h"
-#include "edge_sharpener/util/mesh_types.h"
 #include "edge_sharpener/option_table.h"
+#include "edge_sharpener/util/mesh_types.h"
+#include "mesh_distance.h"
 #include "mesh_io.h"
 #include "report_json.h"
 

@@ -36,7 +36,7 @@ enum class DistanceSampling {
 /// its first Hausdorff Distance filter runs in a fresh meshlabserver.
 constexpr unsigned kMeshLabSeed = 5489u;
 
-inline const char* distanceSamplingName(DistanceSampling mode) {
+inline const char *distanceSamplingName(DistanceSampling mode) {
   return mode == DistanceSampling::meshlab ? "meshlab" : "uniform";
 }
 
@@ -96,17 +96,17 @@ class DistanceSampleSink {
  public:
   using CoordType = typename M::CoordType;
 
-  explicit DistanceSampleSink(vcg::tri::HausdorffSampler<M>& sampler) : sampler_(sampler) {}
+  explicit DistanceSampleSink(vcg::tri::HausdorffSampler<M> &sampler) : sampler_(sampler) {}
 
-  void AddVert(const typename M::VertexType& v) { sampler_.AddSample(v.cP(), CoordType(0, 0, 0)); }
-  void AddFace(const typename M::FaceType& f, const CoordType& barycentric) {
+  void AddVert(const typename M::VertexType &v) { sampler_.AddSample(v.cP(), CoordType(0, 0, 0)); }
+  void AddFace(const typename M::FaceType &f, const CoordType &barycentric) {
     const CoordType p =
         f.cP(0) * barycentric[0] + f.cP(1) * barycentric[1] + f.cP(2) * barycentric[2];
     sampler_.AddSample(p, CoordType(0, 0, 0));
   }
 
  private:
-  vcg::tri::HausdorffSampler<M>& sampler_;
+  vcg::tri::HausdorffSampler<M> &sampler_;
 };
 
 }  // namespace detail
@@ -127,7 +127,7 @@ vcg::Box3<typename M::ScalarType> closestFaceGridBox(const M &target, const M &q
 namespace detail {
 
 template <class M>
-OneSidedDistance summarize(const vcg::tri::HausdorffSampler<M>& sampler) {
+OneSidedDistance summarize(const vcg::tri::HausdorffSampler<M> &sampler) {
   OneSidedDistance result;
   result.samples = static_cast<std::size_t>(sampler.n_total_samples);
   if (result.samples == 0) return result;
@@ -140,8 +140,8 @@ OneSidedDistance summarize(const vcg::tri::HausdorffSampler<M>& sampler) {
 }
 
 template <class M>
-OneSidedDistance sampleDistance(M& sampled, M& target, double searchRadius,
-                                const DistanceOptions& options, bool seedGenerator) {
+OneSidedDistance sampleDistance(M &sampled, M &target, double searchRadius,
+                                const DistanceOptions &options, bool seedGenerator) {
   using Sink = DistanceSampleSink<M>;
   using Sampling = vcg::tri::SurfaceSampling<M, Sink>;
 
@@ -179,9 +179,9 @@ OneSidedDistance sampleDistance(M& sampled, M& target, double searchRadius,
 
 /// Twice the total area of the mesh's live faces.
 template <class M>
-double doubleSurfaceArea(const M& m) {
+double doubleSurfaceArea(const M &m) {
   double sum = 0;
-  for (const auto& f : m.face)
+  for (const auto &f : m.face)
     if (!f.IsD()) sum += vcg::DoubleArea(f);
   return sum;
 }
@@ -191,10 +191,10 @@ double doubleSurfaceArea(const M& m) {
 /// \throw std::invalid_argument when either mesh has no surface (no face of non-zero
 ///        area): vcglib's area-proportional sampling never ends on one.
 template <class M>
-DistanceReport measureDistance(M& a, M& reference, const DistanceOptions& options = {}) {
+DistanceReport measureDistance(M &a, M &reference, const DistanceOptions &options = {}) {
   vcg::tri::RequirePerFaceMark(a);
   vcg::tri::RequirePerFaceMark(reference);
-  for (const M* m : {&a, &reference})
+  for (const M *m : {&a, &reference})
     if (!(doubleSurfaceArea(*m) > 0))
       throw std::invalid_argument(
           "mesh has zero surface area (every face is degenerate): no distance to measure");

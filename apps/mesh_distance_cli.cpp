@@ -1,7 +1,8 @@
 // mesh-distance: the project's Metro. Two-sided surface distance between mesh A and the
 // reference mesh B, absolute and as a percentage of B's bounding-box diagonal.
 //
-//   mesh-distance A B [--samples N] [--seed S] [--sampling uniform|meshlab] [--json] [--no-vertex-samples] [--no-edge-samples]
+//   mesh-distance A B [--samples N] [--seed S] [--sampling uniform|meshlab] [--json]
+//   [--no-vertex-samples] [--no-edge-samples]
 //                     [--color-out FILE.ply [--color-max D | --color-max-percent P]]
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -11,8 +12,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "mesh_distance.h"
 #include "edge_sharpener/util/mesh_types.h"
+#include "mesh_distance.h"
 #include "mesh_io.h"
 // (vcglib's algorithm headers need complex.h, included above, first)
 #include <vcg/complex/algorithms/closest.h>
@@ -24,16 +25,16 @@ namespace es = edge_sharpener;
 namespace {
 
 /// Loads a mesh the distance can be measured on: at least one face, finite coordinates.
-void loadMeasurableMesh(const std::string& path, es::Mesh& mesh) {
+void loadMeasurableMesh(const std::string &path, es::Mesh &mesh) {
   es::io::loadMesh(path, mesh);
   if (mesh.fn == 0) throw std::runtime_error(path + ": mesh has no faces");
-  for (const auto& v : mesh.vert)
+  for (const auto &v : mesh.vert)
     if (!v.IsD() &&
         !(std::isfinite(v.cP().X()) && std::isfinite(v.cP().Y()) && std::isfinite(v.cP().Z())))
       throw std::runtime_error(path + ": mesh has NaN or infinite vertex coordinates");
 }
 
-nlohmann::json oneSidedJson(const es::OneSidedDistance& d, const es::DistanceReport& report) {
+nlohmann::json oneSidedJson(const es::OneSidedDistance &d, const es::DistanceReport &report) {
   return {{"min", d.min},
           {"max", d.max},
           {"mean", d.mean},
@@ -45,7 +46,7 @@ nlohmann::json oneSidedJson(const es::OneSidedDistance& d, const es::DistanceRep
           {"rms_percent", report.percentOfDiagonal(d.rms)}};
 }
 
-nlohmann::json meshJson(const std::string& path, const es::Mesh& mesh) {
+nlohmann::json meshJson(const std::string &path, const es::Mesh &mesh) {
   return {{"path", path}, {"vertices", mesh.vn}, {"faces", mesh.fn}};
 }
 
@@ -53,7 +54,7 @@ nlohmann::json meshJson(const std::string& path, const es::Mesh& mesh) {
 /// quality and a blue (0) -> red (`colorMax` or more) colour, every face the largest
 /// distance found at its corners, edge midpoints and barycentre; written to `path` (PLY).
 /// Returns the largest vertex distance.
-double writeErrorColoring(es::Mesh& a, es::Mesh& b, double colorMax, const std::string& path) {
+double writeErrorColoring(es::Mesh &a, es::Mesh &b, double colorMax, const std::string &path) {
   using Grid = vcg::GridStaticPtr<es::Mesh::FaceType, es::Mesh::ScalarType>;
   vcg::tri::UpdateNormal<es::Mesh>::PerFaceNormalized(b);
   Grid grid;
@@ -62,11 +63,11 @@ double writeErrorColoring(es::Mesh& a, es::Mesh& b, double colorMax, const std::
   both.Add(b.bbox);
   const es::Mesh::ScalarType searchRadius = 2 * both.Diag() + 1e-30f;
   double largest = 0;
-  for (auto& v : a.vert) {
+  for (auto &v : a.vert) {
     if (v.IsD()) continue;
     es::Mesh::ScalarType dist = searchRadius;
     es::Mesh::CoordType closest;
-    const auto* f = vcg::tri::GetClosestFaceBase(b, grid, v.cP(), searchRadius, dist, closest);
+    const auto *f = vcg::tri::GetClosestFaceBase(b, grid, v.cP(), searchRadius, dist, closest);
     const double d = f ? dist : searchRadius;
     largest = std::max(largest, d);
     v.Q() = static_cast<float>(d);
@@ -74,16 +75,16 @@ double writeErrorColoring(es::Mesh& a, es::Mesh& b, double colorMax, const std::
   }
   // Faces: the largest distance at the barycentre and the edge midpoints, where a
   // chamfer is farthest from the true surface (its vertices lie on it).
-  for (auto& f : a.face) {
+  for (auto &f : a.face) {
     if (f.IsD()) continue;
     const es::Mesh::CoordType points[4] = {(f.cP(0) + f.cP(1) + f.cP(2)) / 3,
                                            (f.cP(0) + f.cP(1)) / 2, (f.cP(1) + f.cP(2)) / 2,
                                            (f.cP(2) + f.cP(0)) / 2};
     double worst = 0;
-    for (const auto& p : points) {
+    for (const auto &p : points) {
       es::Mesh::ScalarType dist = searchRadius;
       es::Mesh::CoordType closest;
-      const auto* g = vcg::tri::GetClosestFaceBase(b, grid, p, searchRadius, dist, closest);
+      const auto *g = vcg::tri::GetClosestFaceBase(b, grid, p, searchRadius, dist, closest);
       worst = std::max(worst, g ? static_cast<double>(dist) : static_cast<double>(searchRadius));
     }
     for (int i = 0; i < 3; ++i) worst = std::max(worst, static_cast<double>(f.cV(i)->cQ()));
@@ -97,8 +98,8 @@ double writeErrorColoring(es::Mesh& a, es::Mesh& b, double colorMax, const std::
   return largest;
 }
 
-void printRow(const char* label, double min, double max, double mean, double rms,
-              const std::string& samples, const es::DistanceReport& report) {
+void printRow(const char *label, double min, double max, double mean, double rms,
+              const std::string &samples, const es::DistanceReport &report) {
   std::printf("%-16s %12.6g %12.6g %12.6g %12.6g %10s\n", label, min, max, mean, rms,
               samples.c_str());
   std::printf("%-16s %11.4f%% %11.4f%% %11.4f%% %11.4f%%\n", "  (% diagonal)",
@@ -108,7 +109,7 @@ void printRow(const char* label, double min, double max, double mean, double rms
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char **argv) {
   CLI::App app{
       "Two-sided distance between mesh A and reference mesh B (Metro-style: vertices, edges "
       "and faces sampled), absolute and in % of B's bounding-box diagonal."};
@@ -123,7 +124,7 @@ int main(int argc, char** argv) {
                  "Face samples per side, spread by area (edges get a quarter as many)")
       ->capture_default_str()
       ->check(CLI::Range(std::size_t{1}, std::size_t{1000000000}));
-  auto* seedOption = app.add_option(
+  auto *seedOption = app.add_option(
       "--seed", options.seed,
       "Seed of the sampling generator (default 1; with --sampling meshlab, 5489: where a fresh "
       "MeshLab's generator starts, so that the figures are MeshLab's own)");
@@ -139,7 +140,7 @@ int main(int argc, char** argv) {
   bool noVertices = false, noEdges = false;
   app.add_flag("--no-vertex-samples", noVertices, "Do not sample the meshes' vertices");
   app.add_flag("--no-edge-samples", noEdges, "Do not sample points along the meshes' edges");
-  auto* colorOpt = app.add_option(
+  auto *colorOpt = app.add_option(
       "--color-out", colorOut,
       "Write A as a PLY whose vertices carry their distance to B (quality) and Metro's error "
       "colour: blue = 0, red = the colour scale's maximum or more");
@@ -165,13 +166,13 @@ int main(int argc, char** argv) {
     loadMeasurableMesh(pathA, a);
     loadMeasurableMesh(pathB, b);
     const es::DistanceReport report = es::measureDistance(a, b, options);
-    const es::OneSidedDistance& f = report.forward;
-    const es::OneSidedDistance& r = report.backward;
+    const es::OneSidedDistance &f = report.forward;
+    const es::OneSidedDistance &r = report.backward;
     double colorScale = 0, largestVertexDistance = 0;
     if (!colorOut.empty()) {
       if (es::io::lowerExtension(colorOut) != "ply")
         throw std::runtime_error(colorOut + ": --color-out writes PLY (colour and quality)");
-      colorScale = colorMax > 0 ? colorMax
+      colorScale = colorMax > 0          ? colorMax
                    : colorMaxPercent > 0 ? colorMaxPercent * report.referenceDiagonal / 100.0
                                          : report.max();
       if (!(colorScale > 0)) colorScale = 1e-30;
@@ -218,7 +219,7 @@ int main(int argc, char** argv) {
     if (!colorOut.empty())
       std::printf("error colouring of A (blue 0 -> red %.6g) written to %s\n", colorScale,
                   colorOut.c_str());
-  } catch (const std::exception& error) {
+  } catch (const std::exception &error) {
     std::fprintf(stderr, "mesh-distance: error: %s\n", error.what());
     return 1;
   }

@@ -5,10 +5,10 @@
 #pragma once
 
 #include "extended/feature_zones.h"
-#include "options.h"
-#include "report.h"
 #include "guards/sampling_grid.h"
 #include "guards/vertex_moves.h"
+#include "options.h"
+#include "report.h"
 
 namespace edge_sharpener {
 

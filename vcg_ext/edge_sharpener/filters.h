@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "report.h"
 #include "util/fast_topology.h"
 #include "util/mesh_labels.h"
-#include "report.h"
 
 namespace edge_sharpener {
 

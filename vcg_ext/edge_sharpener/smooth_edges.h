@@ -8,9 +8,9 @@
 #include <memory>
 #include <vector>
 
+#include "report.h"
 #include "util/fast_topology.h"
 #include "util/mesh_labels.h"
-#include "report.h"
 
 namespace edge_sharpener {
 

@@ -2,17 +2,17 @@
 // and the subdivision that carries it out (paper, Figure 4).
 #pragma once
 
+#include <vcg/complex/algorithms/update/topology.h>
+#include <vcg/complex/complex.h>
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
 
-#include <vcg/complex/complex.h>
-#include <vcg/complex/algorithms/update/topology.h>
-
+#include "report.h"
 #include "util/fast_topology.h"
 #include "util/mesh_labels.h"
-#include "report.h"
 
 namespace edge_sharpener {
 

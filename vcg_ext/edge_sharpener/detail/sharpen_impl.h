@@ -10,13 +10,13 @@
 #include "../colorize.h"
 #include "../extended_method.h"
 #include "../filters.h"
-#include "../util/input_check.h"
 #include "../guards/intersection_guard.h"
+#include "../guards/vertex_moves.h"
 #include "../option_table.h"
 #include "../placement.h"
 #include "../smooth_edges.h"
 #include "../subdivision.h"
-#include "../guards/vertex_moves.h"
+#include "../util/input_check.h"
 
 namespace edge_sharpener {
 

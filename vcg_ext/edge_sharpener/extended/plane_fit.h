@@ -9,8 +9,8 @@
 #include <cstring>
 #include <vector>
 
-#include "../util/geometry.h"
 #include "../options.h"
+#include "../util/geometry.h"
 #include "../util/parallel.h"
 #include "zones.h"
 

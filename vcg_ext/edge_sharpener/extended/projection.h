@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "../util/geometry.h"
 #include "../options.h"
 #include "../report.h"
+#include "../util/geometry.h"
 #include "zones.h"
 
 namespace edge_sharpener {

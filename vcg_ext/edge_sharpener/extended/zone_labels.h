@@ -9,10 +9,10 @@
 #include <limits>
 #include <vector>
 
-#include "../util/mesh_labels.h"
 #include "../options.h"
-#include "../util/parallel.h"
 #include "../report.h"
+#include "../util/mesh_labels.h"
+#include "../util/parallel.h"
 #include "plane_fit.h"
 #include "zones.h"
 

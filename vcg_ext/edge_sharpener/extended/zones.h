@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "../util/geometry.h"
-#include "../placement.h"
 #include "../guards/sampling_grid.h"
+#include "../placement.h"
+#include "../util/geometry.h"
 #include "../util/vertex_faces.h"
 
 namespace edge_sharpener {

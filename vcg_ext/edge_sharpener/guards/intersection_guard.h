@@ -24,13 +24,13 @@
 #include <utility>
 #include <vector>
 
-#include "box_hash_grid.h"
-#include "face_contact.h"
-#include "../util/mesh_labels.h"
 #include "../options.h"
-#include "../util/parallel.h"
 #include "../report.h"
 #include "../subdivision.h"
+#include "../util/mesh_labels.h"
+#include "../util/parallel.h"
+#include "box_hash_grid.h"
+#include "face_contact.h"
 #include "vertex_moves.h"
 
 namespace edge_sharpener {

@@ -36,11 +36,11 @@
 #include <unordered_map>
 #include <vector>
 
+#include "../report.h"
+#include "../subdivision.h"
 #include "../util/attributes.h"
 #include "../util/geometry.h"
 #include "../util/mesh_labels.h"
-#include "../report.h"
-#include "../subdivision.h"
 #include "vertex_moves.h"
 
 namespace edge_sharpener {

@@ -9,9 +9,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "../util/mesh_labels.h"
 #include "../report.h"
 #include "../subdivision.h"
+#include "../util/mesh_labels.h"
 
 namespace edge_sharpener {
 

@@ -7,10 +7,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "../labels.h"
 #include "attributes.h"
 #include "fast_topology.h"
 #include "geometry.h"
-#include "../labels.h"
 
 namespace edge_sharpener {
 

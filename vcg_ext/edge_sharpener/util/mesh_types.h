@@ -18,9 +18,9 @@ struct MeshTypesOf {
   class Face;
   struct UsedTypes : public vcg::UsedTypes<vcg::Use<Vertex>::template AsVertexType,
                                            vcg::Use<Face>::template AsFaceType> {};
-  class Vertex : public vcg::Vertex<UsedTypes, VertexCoord, VertexNormal, vcg::vertex::Color4b,
-                                    vcg::vertex::Qualityf, vcg::vertex::BitFlags,
-                                    vcg::vertex::Mark> {};
+  class Vertex
+      : public vcg::Vertex<UsedTypes, VertexCoord, VertexNormal, vcg::vertex::Color4b,
+                           vcg::vertex::Qualityf, vcg::vertex::BitFlags, vcg::vertex::Mark> {};
   class Face : public vcg::Face<UsedTypes, vcg::face::VertexRef, FaceNormal, vcg::face::Color4b,
                                 vcg::face::Qualityf, vcg::face::FFAdj, vcg::face::BitFlags,
                                 vcg::face::Mark> {};
@@ -28,10 +28,8 @@ struct MeshTypesOf {
 };
 
 /// Single precision, like MeshLab's CMeshO: what the CLI reads and writes.
-using Mesh =
-    MeshTypesOf<vcg::vertex::Coord3f, vcg::vertex::Normal3f, vcg::face::Normal3f>::Mesh;
+using Mesh = MeshTypesOf<vcg::vertex::Coord3f, vcg::vertex::Normal3f, vcg::face::Normal3f>::Mesh;
 /// Double precision variant, used by tests to show the core is scalar-generic.
-using MeshD =
-    MeshTypesOf<vcg::vertex::Coord3d, vcg::vertex::Normal3d, vcg::face::Normal3d>::Mesh;
+using MeshD = MeshTypesOf<vcg::vertex::Coord3d, vcg::vertex::Normal3d, vcg::face::Normal3d>::Mesh;
 
 }  // namespace edge_sharpener
