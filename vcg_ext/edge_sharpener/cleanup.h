@@ -12,8 +12,8 @@
 #include <algorithm>
 #include <vector>
 
-#include "subdivision.h"
 #include "guards/vertex_moves.h"
+#include "subdivision.h"
 
 namespace edge_sharpener {
 
@@ -54,23 +54,33 @@ int shortestEdgeIndex(const FaceType &f) {
   return best;
 }
 
-/// The vertices joined by an edge to vertex `z` of face `f`, from the faces
-/// around it. vcglib's VVOrderedStarFF takes one vertex per face, so at a
-/// border vertex (k faces, k + 1 neighbours) it misses one.
+/// Vertex `z` of face `f` seen from the faces around it: the vertices joined
+/// to it by an edge, and whether a border edge ends at it. vcglib's
+/// VVOrderedStarFF takes one vertex per face, so at a border vertex (k
+/// faces, k + 1 neighbours) it misses one.
 template <class FaceType>
-std::vector<typename FaceType::VertexType *> neighbours(FaceType &f, int z) {
-  using Pos = vcg::face::Pos<FaceType>;
-  auto *v = f.V(z);
-  std::vector<Pos> star;
-  vcg::face::VFOrderedStarFF(Pos(&f, z, v), star);
-  std::vector<typename FaceType::VertexType *> out;
-  for (const Pos &p : star)
-    for (int j = 0; j < 3; ++j) {
-      auto *u = p.F()->V(j);
-      if (u != v && std::find(out.begin(), out.end(), u) == out.end()) out.push_back(u);
+struct VertexStar {
+  std::vector<typename FaceType::VertexType *> neighbours;
+  bool onBorder = false;
+
+  VertexStar(FaceType &f, int z) {
+    using Pos = vcg::face::Pos<FaceType>;
+    auto *v = f.V(z);
+    std::vector<Pos> star;
+    vcg::face::VFOrderedStarFF(Pos(&f, z, v), star);
+    for (const Pos &p : star) {
+      FaceType *h = p.F();
+      for (int j = 0; j < 3; ++j) {
+        auto *u = h->V(j);
+        if (u == v) {
+          onBorder |= h->FFp(j) == h || h->FFp((j + 2) % 3) == h;
+        } else if (std::find(neighbours.begin(), neighbours.end(), u) == neighbours.end()) {
+          neighbours.push_back(u);
+        }
+      }
     }
-  return out;
-}
+  }
+};
 
 /// The link condition of edge z of face f (Dey et al.; what
 /// vcg::face::FFLinkCondition tests, with every neighbour of a border
@@ -79,26 +89,13 @@ std::vector<typename FaceType::VertexType *> neighbours(FaceType &f, int z) {
 /// faces, are not both on a border.
 template <class FaceType>
 bool linkConditionHolds(FaceType &f, int z) {
-  FaceType *g = f.FFp(z);
-  const bool borderEdge = g == &f;
-  const auto around0 = neighbours(f, z), around1 = neighbours(f, (z + 1) % 3);
+  const bool borderEdge = f.FFp(z) == &f;
+  const VertexStar<FaceType> end0(f, z), end1(f, (z + 1) % 3);
   std::size_t shared = 0;
-  for (auto *u : around0) shared += std::find(around1.begin(), around1.end(), u) != around1.end();
+  for (auto *u : end0.neighbours)
+    shared += std::find(end1.neighbours.begin(), end1.neighbours.end(), u) != end1.neighbours.end();
   if (shared != (borderEdge ? 1u : 2u)) return false;
-  if (borderEdge) return true;
-  // A vertex is on a border when a face around it has a border edge at it.
-  const auto onBorder = [](FaceType &face, int i) {
-    auto *v = face.V(i);
-    std::vector<vcg::face::Pos<FaceType>> star;
-    vcg::face::VFOrderedStarFF(vcg::face::Pos<FaceType>(&face, i, v), star);
-    for (const auto &q : star) {
-      FaceType *h = q.F();
-      const int at = h->V(0) == v ? 0 : h->V(1) == v ? 1 : 2;
-      if (h->FFp(at) == h || h->FFp((at + 2) % 3) == h) return true;
-    }
-    return false;
-  };
-  return !(onBorder(f, z) && onBorder(f, (z + 1) % 3));
+  return borderEdge || !(end0.onBorder && end1.onBorder);
 }
 
 }  // namespace detail
@@ -170,7 +167,7 @@ bool flipCap(typename MeshType::FaceType &f, MeshLabels<MeshType> &labels) {
   const int w = f.FFi(z);
   auto *p = f.V0(z), *q = f.V1(z), *r = f.V2(z), *s = g->V2(w);
   if (r == s || g->V(w) != q || g->V1(w) != p) return false;
-  for (auto *v : detail::neighbours(f, (z + 2) % 3))
+  for (auto *v : detail::VertexStar<FaceType>(f, (z + 2) % 3).neighbours)
     if (v == s) return false;  // the new edge exists already
 
   const Vec3 P = positionOf(p), Q = positionOf(q), R = positionOf(r), S = positionOf(s);
