@@ -101,6 +101,14 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                           {"rounds", r.grid.rounds},
                           {"blended_features", r.grid.blendedFeatures},
                           {"feature_reverted", r.grid.featureReverted}};
+  if (r.evidenceGuard)
+    j["evidence"] = {{"features", r.evidence.features},
+                     {"weak_features", r.evidence.weakFeatures},
+                     {"reverted", r.evidence.reverted},
+                     {"zone_reverted", r.evidence.zoneReverted},
+                     {"refused_fraction", r.evidence.refusedFraction},
+                     {"whole_mesh_left", r.evidence.wholeMeshLeft},
+                     {"faces_given_back", r.evidence.facesGivenBack}};
   return j;
 }
 

@@ -200,15 +200,24 @@ std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
 /// by subdivide(): needles by collapse, caps by flip, and otherwise by
 /// sending the face's moved vertices back to rest. What is left is inherited
 /// from the input: children of input slivers, split at rest positions. Deleted elements are left
-/// flagged (compact afterwards).
+/// flagged (compact afterwards). With `onlyWhereMoved` (the auto method),
+/// a face none of whose vertices moved is left as it is: it lies on its
+/// input face, and a collapse would move the input's surface.
 /// \pre placeInsertedVertices() ran; FF topology up to date.
 template <class MeshType>
-CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves, double angleRad) {
+CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves, double angleRad,
+                                       bool onlyWhereMoved = false) {
   const SplitPlan &plan = moves.plan();
   MeshLabels<MeshType> &labels = moves.labels();
   CleanupStats s;
+  const auto anyMoved = [&](const typename MeshType::FaceType &f) {
+    for (int j = 0; j < 3; ++j)
+      if (moves.isMoved(vcg::tri::Index(m, f.cV(j)))) return true;
+    return false;
+  };
   const auto degenerate = [&](const typename MeshType::FaceType &f) {
-    return !f.IsD() && detail::isSplitChild(labels.face[&f]) && detail::faceMinAngle(f) < angleRad;
+    return !f.IsD() && detail::isSplitChild(labels.face[&f]) &&
+           detail::faceMinAngle(f) < angleRad && (!onlyWhereMoved || anyMoved(f));
   };
   // Only split children can be degenerate, and no step below relabels a face
   // or adds one: scanning these (in index order) is scanning every face.

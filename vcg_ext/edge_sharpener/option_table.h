@@ -21,13 +21,21 @@ enum class OptionType { Flag, Integer, Real, Choice };
 
 /// Who sets the option. `Ordinary` options are what users see first (CLI
 /// help, MeshLab dialog, Blender panel); the others are one method's tuning.
-enum class OptionGroup { Ordinary, PaperTuning, ExtendedTuning, StrictGuard, GridGuard };
+enum class OptionGroup {
+  Ordinary,
+  PaperTuning,
+  ExtendedTuning,
+  EvidenceGuard,
+  StrictGuard,
+  GridGuard
+};
 
 inline const char *toString(OptionGroup g) {
   switch (g) {
     case OptionGroup::Ordinary: return "Options";
     case OptionGroup::PaperTuning: return "Paper method tuning";
     case OptionGroup::ExtendedTuning: return "Extended method tuning";
+    case OptionGroup::EvidenceGuard: return "Auto method: evidence guard";
     case OptionGroup::StrictGuard: return "Extended method: strict plane guard";
     case OptionGroup::GridGuard: return "Extended method: sampling-grid guard";
   }
@@ -105,14 +113,18 @@ inline const std::vector<OptionSpec> &optionTable() {
   static const std::vector<OptionSpec> table{
       // ----- what users set
       {"method", "--method", "method", "Method",
-       "paper: the 2003 method exactly as published (chamfers one triangle wide); extended: "
-       "smooth regions are segmented and the feature zone between them may be of any width "
-       "(marching-cubes bands, corner patches); zone vertices move onto their region's fitted "
-       "plane, never the vertices of smooth regions.",
-       T::Choice, G::Ordinary, "", 0, 1, false, kBoth,
-       {"paper", "extended"}, {"Paper (2003)", "Extended (feature zones)"},
-       [](const SharpenOptions &o) { return o.method == Method::Extended ? 1.0 : 0.0; },
-       [](SharpenOptions &o, double v) { o.method = v == 1 ? Method::Extended : Method::Paper; }},
+       "auto (the default): the extended method, keeping only the features whose evidence is "
+       "strong (their placement tests agree and their samples lie on the planes fitted beside "
+       "them) and leaving the mesh as it is when most of them are weak (a depth scan, a model "
+       "already sharp); paper: the 2003 method exactly as published (chamfers one triangle "
+       "wide); extended: smooth regions are segmented and the feature zone between them may "
+       "be of any width (marching-cubes bands, corner patches); zone vertices move onto their "
+       "region's fitted plane, never the vertices of smooth regions.",
+       T::Choice, G::Ordinary, "", 0, 2, false, kBoth,
+       {"paper", "extended", "auto"},
+       {"Paper (2003)", "Extended (feature zones)", "Auto (extended, on strong evidence only)"},
+       [](const SharpenOptions &o) { return double(int(o.method)); },
+       [](SharpenOptions &o, double v) { o.method = Method(int(v)); }},
       {"multiplier", "--multiplier", "smoothMultiplier", "Smooth-edge multiplier",
        "An edge is smooth when the angle between the normals of its two faces is below this "
        "multiple of the mean of that angle over the whole mesh (paper: 2). Smaller values find "
@@ -243,6 +255,27 @@ inline const std::vector<OptionSpec> &optionTable() {
        "fit (0: no refit).",
        T::Real, G::ExtendedTuning, "deg", 0, 180, false, kNotInMeshLab, {}, {},
        ES_ANGLE(fitTrimAngleRad)},
+      // ----- auto method: the evidence guard
+      {"max_refused_fraction", "--max-refused", "", "Refused fraction",
+       "Auto method: nothing is sharpened when the other tests kept at rest more than this "
+       "fraction of the new vertices of the features that moved at all (the input is not a "
+       "chamfered sampling of sharp edges: a scan, a model already sharp, a smooth shape).",
+       T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_REAL(maxRefusedFraction)},
+      {"max_feature_fallback_fraction", "--feature-fallback", "", "Feature fallback fraction",
+       "Auto method: a feature (a chamfer strip with its corners) stays as it was when more "
+       "than this fraction of its new vertices were kept at rest by the other tests.",
+       T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_REAL(maxFeatureFallbackFraction)},
+      {"max_feature_off_plane_spacings", "--feature-off-plane", "", "Feature off-plane distance",
+       "Auto method: a feature stays as it was when its vertices lie farther than this from the "
+       "planes fitted to its flanks (median over the feature): a blend or a curved face.",
+       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(maxFeatureOffPlaneSpacings)},
+      {"min_feature_vertices", "--min-feature-vertices", "", "Minimum feature size",
+       "Auto method: a feature with fewer new vertices than this stays as it was.",
+       T::Integer, G::EvidenceGuard, "vertices", 0, 1000, false, kNotInMeshLab, {}, {},
+       ES_INT(minFeatureVertices)},
       // ----- extended method, strict plane guard (the preset first)
       {"strict", "--strict", "strictPlaneGuard", "Strict plane guard (extended)",
        "Extended method only. Region faces next to the feature zone that turn away from their "

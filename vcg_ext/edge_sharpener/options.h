@@ -13,7 +13,14 @@ namespace edge_sharpener {
 enum class Method {
   Paper,     ///< the 2003 filter approach, exactly as published (section 3)
   Extended,  ///< feature zones of any width between segmented smooth regions (feature_zones.h)
+  Auto,      ///< the extended method, each feature kept only on strong evidence
+             ///< (feature_evidence.h); the default
 };
+
+/// Whether `method` detects by feature zones (extended_method.h).
+inline bool usesFeatureZones(Method method) {
+  return method != Method::Paper;
+}
 
 /// Options of sharpen() and detectChamfers(). Angles are in radians.
 struct SharpenOptions {
@@ -41,7 +48,7 @@ struct SharpenOptions {
   /// per-vertex colour on the mesh).
   bool colorize = false;
 
-  Method method = Method::Paper;
+  Method method = Method::Auto;
 
   // --- Extended method only (feature_zones.h) ---
 
@@ -144,6 +151,21 @@ struct SharpenOptions {
   /// small fraction separates; 0.1 leaves room for a stray witness.
   double gridBlendedFeatureFraction = 0.1;
 
+  // --- Auto method: the evidence guard (feature_evidence.h) ---
+
+  /// Nothing is sharpened when the tests refused more than this fraction of
+  /// the inserted vertices of the features placement moved at all
+  /// (feature_evidence.h: refusedFraction).
+  double maxRefusedFraction = 0.4;
+  /// A feature goes back to rest whole when more than this fraction of its
+  /// inserted vertices were refused by the other tests...
+  double maxFeatureFallbackFraction = 0.2;
+  /// ...or when its source vertices lie off their planes by more than this
+  /// many sample spacings (the median over the feature)...
+  double maxFeatureOffPlaneSpacings = 0.15;
+  /// ...or when it has fewer than this many inserted vertices.
+  int minFeatureVertices = 3;
+
   // --- Extended method, strict plane guard (off by default; `--strict`) ---
 
   /// Before zone labelling, region faces touching the zone whose normal turns
@@ -176,6 +198,13 @@ struct SharpenOptions {
   static constexpr double kStrictBorderTurnThresholdFactor = 1.0;
   static constexpr double kStrictMaxSourceOffPlaneSpacings = 0.3;
   static constexpr double kStrictFitSeedFlatAngleRad = 4.0 * M_PI / 180.0;
+
+  /// The 2003 method exactly as published, every other option at its default.
+  static SharpenOptions paperMethod() {
+    SharpenOptions o;
+    o.method = Method::Paper;
+    return o;
+  }
 
   /// Optional progress callback (percent, stage name); may be null.
   vcg::CallBackPos *progress = nullptr;

@@ -351,7 +351,7 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
     planes[i] = support.plane(src.original[i]);
     if (planes[i].normal.SquaredNorm() == 0) return Placement::NoSupportPlane;
   }
-  const bool extended = opt.method == Method::Extended;
+  const bool extended = usesFeatureZones(opt.method);
   if (extended)
     if (veto::Verdict v = veto::regionsTurnLikeABlend(src, planes, support, opt)) return *v;
   const Placement paper = paperPlacement(src, planes, opt, target);
@@ -420,7 +420,7 @@ void placeInsertedVertices(MeshType &m, const SplitPlan &plan, MeshLabels<MeshTy
     labels.placement[n0 + k] = p;
   }
   if (opt.edgeLengthCheck) {
-    const double factor = opt.method == Method::Extended ? opt.extendedEdgeLengthFactor : 1.0;
+    const double factor = usesFeatureZones(opt.method) ? opt.extendedEdgeLengthFactor : 1.0;
     enforceEdgeLength(m, plan, labels, insertedPos, factor * longestEdge);
   }
   for (std::size_t k = 0; k < plan.inserted.size(); ++k)

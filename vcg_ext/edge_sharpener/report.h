@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <sstream>
 #include <string>
@@ -91,6 +92,18 @@ struct GridGuardStats {
   std::size_t featureReverted = 0;  ///< of `reverted`, those sent back with their feature
 };
 
+/// Stage 6c, auto method: features sent back whole for weak evidence
+/// (feature_evidence.h).
+struct EvidenceStats {
+  std::size_t features = 0;        ///< features (inserted vertices joined through their sources)
+  std::size_t weakFeatures = 0;    ///< of those, left as they were
+  std::size_t reverted = 0;        ///< inserted vertices sent back (counted in placement too)
+  std::size_t zoneReverted = 0;    ///< projected zone vertices sent back
+  double refusedFraction = 0;      ///< of the moved features' vertices, those refused
+  bool wholeMeshLeft = false;      ///< refusedFraction too high: nothing sharpened
+  std::size_t facesGivenBack = 0;  ///< split faces left at rest that got their input face back
+};
+
 /// Extended method: segmentation and zone labelling.
 struct ExtendedStats {
   std::size_t regions = 0;               ///< smooth regions kept
@@ -116,7 +129,9 @@ struct SharpenReport {
   PlacementStats placement;
   CleanupStats cleanup;
   IntersectionStats intersections;
-  GridGuardStats grid;  ///< extended method with SharpenOptions::samplingGridGuard
+  GridGuardStats grid;         ///< extended method with SharpenOptions::samplingGridGuard
+  bool evidenceGuard = false;  ///< the auto method's evidence guard ran
+  EvidenceStats evidence;
   bool extendedMethod = false;
   ExtendedStats extended;        ///< filled by the extended method only
   bool geometryChanged = false;  ///< false for detection-only runs
@@ -191,6 +206,13 @@ inline void formatGuards(std::ostream &s, const SharpenReport &r) {
   if (r.extendedMethod) s << ", " << r.intersections.zoneReverted << " zone vertices reverted";
   s << " (" << r.intersections.rounds << " rounds), " << r.intersections.remaining
     << " left as they are (they intersect at rest too)\n";
+  if (r.evidenceGuard)
+    s << "evidence: " << r.evidence.weakFeatures << " of " << r.evidence.features
+      << " features left as they were (" << r.evidence.reverted << " inserted and "
+      << r.evidence.zoneReverted << " zone vertices sent back); "
+      << int(std::lround(100 * r.evidence.refusedFraction)) << "% of the moves refused"
+      << (r.evidence.wholeMeshLeft ? ": too many, the mesh is left as it was" : "") << "; "
+      << r.evidence.facesGivenBack << " split faces at rest given back their input face\n";
 }
 
 }  // namespace detail

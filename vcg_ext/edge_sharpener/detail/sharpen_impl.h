@@ -3,6 +3,8 @@
 #pragma once
 
 #include <vcg/complex/complex.h>
+
+#include <optional>
 // (vcglib's algorithm headers need complex.h first)
 #include <vcg/complex/algorithms/update/normal.h>
 
@@ -10,6 +12,7 @@
 #include "../colorize.h"
 #include "../extended_method.h"
 #include "../filters.h"
+#include "../guards/feature_evidence.h"
 #include "../guards/intersection_guard.h"
 #include "../guards/vertex_moves.h"
 #include "../option_table.h"
@@ -51,7 +54,7 @@ void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
   reportProgress(opt, 5, "Edge-Sharpener: smooth edges");
   computeFaceNormals(m, labels);
   report.smooth = labelSmoothEdges(m, labels, opt.smoothMultiplier);
-  if (opt.method == Method::Extended) {
+  if (usesFeatureZones(opt.method)) {
     reportProgress(opt, 20, "Edge-Sharpener: feature zones");
     detectFeatureZones(m, labels, opt, report, zones);
     return;
@@ -129,20 +132,36 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   detail::detect(m, labels, opt, report, zones);
 
   detail::reportProgress(opt, 40, "Edge-Sharpener: subdivision");
+  std::optional<InputFaces<MeshType>> input;  // the auto method may give it back whole
+  if (opt.method == Method::Auto) input.emplace(m);
   const SplitPlan plan = planSplits(m, labels);
   report.subdivision = subdivide(m, plan, labels);
-  VertexMoves<MeshType> moves(m, plan, labels, opt.method == Method::Extended);
+  VertexMoves<MeshType> moves(m, plan, labels, usesFeatureZones(opt.method));
 
   detail::reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
   placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt, zones.support);
-  if (opt.method == Method::Extended) refineExtendedPlacement(m, moves, zones, opt, report);
+  if (usesFeatureZones(opt.method)) refineExtendedPlacement(m, moves, zones, opt, report);
+  if (input) {
+    report.evidenceGuard = true;
+    report.evidence = revertWeakFeatures(m, moves, zones.support, opt);
+  }
 
   detail::reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
-  report.cleanup = removeDegenerateTriangles(m, moves, opt.degenerateAngleRad);
+  std::optional<ElementSnapshot<MeshType>> beforeGuards;
+  if (input) beforeGuards.emplace(m, labels);
+  report.cleanup = removeDegenerateTriangles(m, moves, opt.degenerateAngleRad,
+                                             /*onlyWhereMoved=*/input.has_value());
   report.intersections =
       revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
+  if (beforeGuards &&
+      leaveMeshIfGuardsRefused(m, moves, zones.support, opt, *beforeGuards, report.evidence)) {
+    report.cleanup = {};  // undone
+    report.intersections = {};
+  }
   detail::countOutcomes(moves, report);
+  if (input) report.evidence.facesGivenBack = input->unsplitResting(m, moves);
   detail::finish(m, labels, opt, report);
+  if (report.evidence.facesGivenBack > 0) vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
   return report;
 }
 

@@ -1,0 +1,258 @@
+// The auto method's evidence guard: a feature is sharpened whole or not at
+// all. A feature is one chamfer strip between two regions (its inserted
+// vertices joined through the input vertices they come from) or a cluster of
+// corner vertices. Along a real sharp edge of a remeshed solid, placement's
+// tests agree (the paper's degenerate cases, the extended method's vetoes)
+// and the samples beside the edge lie on the planes its flanks extrapolate.
+// Where many of the tests refuse, or the samples lie off the planes, the
+// flanks are not what placement assumed (a blend, a curved face, a thin
+// wall), and the moves the tests let through are the least trustworthy: the
+// feature stays as it was (do no harm), as does one too short to be a
+// feature. Where the tests refuse a large part of all the moves, the input
+// is not a chamfered sampling of sharp edges at all (a depth scan's fused
+// surface, a model already sharp) and nothing moves.
+#pragma once
+
+#include <vcg/complex/complex.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+// (vcglib's algorithm headers, included below, need complex.h first)
+
+#include "../options.h"
+#include "../placement.h"
+#include "../report.h"
+#include "../subdivision.h"
+#include "element_snapshot.h"
+#include "vertex_moves.h"
+
+namespace edge_sharpener {
+
+/// One feature: inserted vertices joined through shared source vertices.
+/// A sharp edge's feature holds the inserted vertices between the same two
+/// regions; a corner's, those with three sources.
+struct Feature {
+  bool corner = false;
+  std::size_t vertices = 0;  ///< inserted vertices still in the mesh
+  std::size_t moved = 0;     ///< of those, placed on their planes
+  /// How far the source vertices lie from their own planes, in sample
+  /// spacings: the median and the largest. A remeshed sharp edge's samples
+  /// lie on the planes its flanks extrapolate; a blend's, a curved face's or
+  /// a scan's do not.
+  double medianOffPlane = 0, maxOffPlane = 0;
+  /// Median distance of the moves, in sample spacings.
+  double medianDisplacement = 0;
+};
+
+/// Groups the inserted vertices into features. `regionOf` gives each source
+/// vertex's region (-1: none): an edge vertex's feature is the connected set
+/// of edge vertices between the same two regions, a corner vertex's the
+/// connected set of corner vertices. Pure: reads the split plan only.
+/// \return per inserted vertex (plan.inserted order) its feature's index.
+template <class RegionOf>
+std::vector<std::uint32_t> groupFeatures(const SplitPlan &plan, RegionOf &&regionOf,
+                                         std::vector<Feature> &features) {
+  const std::size_t n = plan.inserted.size();
+  const auto keyOf = [&](std::size_t k) -> std::pair<long, long> {
+    const InsertedVertexSource &s = plan.inserted[k];
+    if (s.originalCount != 2) return {-2, -2};  // corners join corners
+    const long a = regionOf(s.original[0]), b = regionOf(s.original[1]);
+    return {std::min(a, b), std::max(a, b)};
+  };
+  std::vector<std::uint32_t> parent(n);
+  std::iota(parent.begin(), parent.end(), 0u);
+  const auto root = [&](std::uint32_t k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  // Per source vertex, the inserted vertices it sources (few: a chamfer
+  // vertex has two or three chamfer edges and corners around it).
+  std::vector<std::vector<std::uint32_t>> sourced(plan.originalVertexCount);
+  for (std::uint32_t k = 0; k < n; ++k)
+    for (int i = 0; i < plan.inserted[k].originalCount; ++i)
+      sourced[plan.inserted[k].original[i]].push_back(k);
+  for (const auto &list : sourced)
+    for (std::size_t i = 0; i < list.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (keyOf(list[i]) == keyOf(list[j])) parent[root(list[i])] = root(list[j]);
+  constexpr std::uint32_t kNone = ~std::uint32_t(0);
+  std::vector<std::uint32_t> id(n, kNone), feature(n);
+  features.clear();
+  for (std::uint32_t k = 0; k < n; ++k) {
+    std::uint32_t &r = id[root(k)];
+    if (r == kNone) {
+      r = std::uint32_t(features.size());
+      features.emplace_back().corner = plan.inserted[k].originalCount != 2;
+    }
+    feature[k] = r;
+  }
+  return feature;
+}
+
+namespace detail {
+inline double medianOf(std::vector<double> &values) {
+  if (values.empty()) return 0;
+  auto mid = values.begin() + values.size() / 2;
+  std::nth_element(values.begin(), mid, values.end());
+  return *mid;
+}
+}  // namespace detail
+
+/// The features of the split mesh and the evidence of each (Feature).
+/// \pre placement (and the extended refinement) has run.
+template <class MeshType>
+std::vector<std::uint32_t> measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
+                                           const SupportPlanes &support,
+                                           std::vector<Feature> &features) {
+  const SplitPlan &plan = moves.plan();
+  const auto regionOf = [&](std::size_t v) -> long {
+    return v < support.region.size() ? support.region[v] : -1;
+  };
+  std::vector<std::uint32_t> feature = groupFeatures(plan, regionOf, features);
+  const double spacing = support.sampleSpacing > 0 ? support.sampleSpacing : 1.0;
+  std::vector<std::vector<double>> offPlane(features.size()), displacement(features.size());
+  const std::size_t first = moves.firstInserted();
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+    const auto &v = m.vert[first + k];
+    if (v.IsD()) continue;
+    Feature &f = features[feature[k]];
+    ++f.vertices;
+    if (moves.isMoved(first + k)) {
+      ++f.moved;
+      displacement[feature[k]].push_back((positionOf(&v) - plan.inserted[k].rest).Norm() / spacing);
+    }
+    for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
+      const std::size_t s = plan.inserted[k].original[i];
+      const Plane &pl = support.plane(s);
+      if (pl.normal.SquaredNorm() == 0) continue;
+      offPlane[feature[k]].push_back(std::abs(pl.normal * (moves.exactRest(s) - pl.point)) /
+                                     spacing);
+    }
+  }
+  for (std::size_t c = 0; c < features.size(); ++c) {
+    Feature &f = features[c];
+    for (double d : offPlane[c]) f.maxOffPlane = std::max(f.maxOffPlane, d);
+    f.medianOffPlane = detail::medianOf(offPlane[c]);
+    f.medianDisplacement = detail::medianOf(displacement[c]);
+  }
+  return feature;
+}
+
+/// Whether a feature has too little evidence to be sharpened: too short to
+/// be a feature, too many of its vertices refused by the other tests, or its
+/// samples off the planes its flanks extrapolate.
+inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
+  if (!f.corner && f.vertices < std::size_t(opt.minFeatureVertices)) return true;
+  if (f.medianOffPlane > opt.maxFeatureOffPlaneSpacings) return true;
+  return double(f.vertices - f.moved) > opt.maxFeatureFallbackFraction * double(f.vertices);
+}
+
+/// Of the inserted vertices of the features placement moved at all, the
+/// fraction the tests refused. On a remeshed solid the tests agree nearly
+/// everywhere; where they refuse a large part of the moves, the input is not
+/// a chamfered sampling of planes meeting at sharp edges (a scan's fused
+/// noise, a model already sharp, a smooth shape) and nothing is trusted.
+inline double refusedFraction(const std::vector<Feature> &features) {
+  std::size_t vertices = 0, moved = 0;
+  for (const Feature &f : features)
+    if (f.moved > 0) {
+      vertices += f.vertices;
+      moved += f.moved;
+    }
+  return vertices == 0 ? 0.0 : double(vertices - moved) / double(vertices);
+}
+
+/// Per feature, whether its moves go back: every feature when the mesh as a
+/// whole shows too little evidence (refusedFraction), else those whose
+/// evidence is weak and the corners one of whose edges' is (a corner is
+/// where its edges meet).
+inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<Feature> &features,
+                                      const std::vector<std::uint32_t> &featureOf,
+                                      const SharpenOptions &opt) {
+  if (refusedFraction(features) > opt.maxRefusedFraction)
+    return std::vector<char>(features.size(), 1);
+  std::vector<char> weak(features.size(), 0);
+  for (std::size_t c = 0; c < features.size(); ++c)
+    weak[c] = featureEvidenceIsWeak(features[c], opt);
+  // An edge feature's weakness reaches the corner features around its sources.
+  std::vector<char> weakSource(plan.originalVertexCount, 0);
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k)
+    if (!features[featureOf[k]].corner && weak[featureOf[k]])
+      for (int i = 0; i < plan.inserted[k].originalCount; ++i)
+        weakSource[plan.inserted[k].original[i]] = 1;
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k)
+    if (features[featureOf[k]].corner)
+      for (int i = 0; i < plan.inserted[k].originalCount; ++i)
+        if (weakSource[plan.inserted[k].original[i]]) weak[featureOf[k]] = 1;
+  return weak;
+}
+
+/// Sends back to rest every move of the features whose evidence is weak
+/// (featureEvidenceIsWeak): their inserted vertices (as
+/// Placement::WeakEvidence) and the zone vertices projected beside them.
+/// Runs after placement, before the cleanup: a feature left as it was is
+/// never touched by the cleanup's collapses and flips, so its faces are the
+/// input's exactly.
+template <class MeshType>
+EvidenceStats revertWeakFeatures(MeshType &m, VertexMoves<MeshType> &moves,
+                                 const SupportPlanes &support, const SharpenOptions &opt) {
+  EvidenceStats stats;
+  std::vector<Feature> features;
+  const std::vector<std::uint32_t> feature = measureFeatures(m, moves, support, features);
+  const SplitPlan &plan = moves.plan();
+  stats.features = features.size();
+  stats.refusedFraction = refusedFraction(features);
+  stats.wholeMeshLeft = stats.refusedFraction > opt.maxRefusedFraction;
+  const std::vector<char> weak = weakFeatures(plan, features, feature, opt);
+  for (std::size_t c = 0; c < features.size(); ++c)
+    stats.weakFeatures += weak[c] && features[c].moved > 0;
+  const std::size_t first = moves.firstInserted();
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+    if (!weak[feature[k]] || m.vert[first + k].IsD()) continue;
+    if (moves.isMoved(first + k)) {
+      moves.sendBack(first + k, Placement::WeakEvidence);
+      ++stats.reverted;
+    }
+    for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
+      const std::size_t v = plan.inserted[k].original[i];
+      if (!m.vert[v].IsD() && moves.isMoved(v)) {
+        moves.sendBack(v, Placement::Original);
+        ++stats.zoneReverted;
+      }
+    }
+  }
+  return stats;
+}
+
+/// After the cleanup and the intersection guard: when they refused so many
+/// of the moves left that the mesh as a whole shows too little evidence
+/// (refusedFraction), the mesh returns to `beforeGuards` with every vertex at
+/// rest, the input's surface exactly (their collapses and flips undone).
+/// \return whether it did.
+template <class MeshType>
+bool leaveMeshIfGuardsRefused(MeshType &m, VertexMoves<MeshType> &moves,
+                              const SupportPlanes &support, const SharpenOptions &opt,
+                              const ElementSnapshot<MeshType> &beforeGuards, EvidenceStats &stats) {
+  std::vector<Feature> features;
+  measureFeatures(m, moves, support, features);
+  const double refused = refusedFraction(features);
+  if (!(refused > opt.maxRefusedFraction)) return false;
+  beforeGuards.restore(m, moves.labels());
+  stats.refusedFraction = refused;
+  stats.wholeMeshLeft = true;
+  const SplitPlan &plan = moves.plan();
+  for (std::size_t v = 0; v < moves.firstInserted() + plan.inserted.size(); ++v) {
+    if (m.vert[v].IsD() || !moves.hasRest(v) || !moves.isMoved(v)) continue;
+    const bool inserted = moves.isInserted(v);
+    moves.sendBack(v, inserted ? Placement::WeakEvidence : Placement::Original);
+    ++(inserted ? stats.reverted : stats.zoneReverted);
+  }
+  stats.weakFeatures = features.size();
+  return true;
+}
+
+}  // namespace edge_sharpener
