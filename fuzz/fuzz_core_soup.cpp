@@ -29,7 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   for (std::size_t i = 0; i < nf; ++i, ++fi)
     for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[next() % nv];
 
-  edge_sharpener::SharpenOptions opt;
+  auto opt = edge_sharpener::SharpenOptions::paperMethod();  // its invariants are checked
   opt.smoothMultiplier = 1.0 + (flags & 7) * 0.5;  // 1 .. 4.5
   opt.edgeLengthCheck = !(flags & 8);
   opt.convexityCheck = !(flags & 16);

@@ -65,7 +65,7 @@ double maxDeviationFromCrease(MeshType &m, double (*f)(double, double)) {
 }
 
 es::SharpenOptions defaults() {
-  return {};
+  return es::SharpenOptions::paperMethod();
 }
 
 }  // namespace
@@ -155,7 +155,7 @@ TEST(Fallbacks, MixedConvexityKeepsVerticesAtRest) {
 TEST(Fallbacks, EdgeLengthCheckRejectsFarIntersections) {
   es::Mesh m;
   makeHeightField(m, kNx, kNy, kH, stepTilted);
-  es::SharpenOptions opt;
+  es::SharpenOptions opt = es::SharpenOptions::paperMethod();
   opt.convexityCheck = false;
   const auto r = es::sharpen(m, opt);
   EXPECT_EQ(r.placement.count(es::Placement::EdgeTooLong), r.subdivision.insertedVertices);
@@ -179,7 +179,7 @@ TEST(Fallbacks, EdgeLengthCheckRejectsFarIntersections) {
 TEST(Fallbacks, ParallelPlanesKeepVerticesAtRest) {
   es::Mesh m;
   makeHeightField(m, kNx, kNy, kH, stepParallel);
-  es::SharpenOptions opt;
+  es::SharpenOptions opt = es::SharpenOptions::paperMethod();
   opt.convexityCheck = false;  // otherwise the step is caught as mixed first
   const auto r = es::sharpen(m, opt);
   ASSERT_GT(r.subdivision.insertedVertices, 0u);
@@ -227,7 +227,7 @@ TEST(InputErrors, RefusedMeshesAreLeftUnchanged) {
 
   es::Mesh bad;
   makeHeightField(bad, 4, 4, kH, ridge);
-  es::SharpenOptions opt;
+  es::SharpenOptions opt = es::SharpenOptions::paperMethod();
   opt.smoothMultiplier = -1;
   EXPECT_THROW(es::sharpen(bad, opt), es::InputError);
 }
@@ -245,7 +245,7 @@ double fadingRidge(double x, double y) {
 }  // namespace
 
 TEST(Extended, RidgeFadingIntoOneRegionIsStillSharpened) {
-  es::SharpenOptions opt;
+  es::SharpenOptions opt = es::SharpenOptions::paperMethod();
   opt.method = es::Method::Extended;
   es::SharpenOptions oneSurfacePerRegion = opt;
   oneSurfacePerRegion.openInternalCreases = false;
@@ -319,7 +319,7 @@ TEST(Fallbacks, CornerPairBendsAwayWhereTheCornerDoesNot) {
   corner.original = {0, 1, 2};
   corner.originalCount = 3;
   corner.rest = Vec3(-0.1, -0.1, -0.1);
-  es::SharpenOptions opt;
+  es::SharpenOptions opt = es::SharpenOptions::paperMethod();
   opt.method = es::Method::Extended;
   const Plane planes[3] = {support.plane(0), support.plane(1), support.plane(2)};
 
@@ -355,7 +355,7 @@ TEST(Fallbacks, SourceOffItsPlaneKeepsVertexAtRest) {
   edge.original = {0, 1, 0};
   edge.originalCount = 2;
   edge.rest = Vec3(-0.1, 0, -0.1);
-  es::SharpenOptions opt;
+  es::SharpenOptions opt = es::SharpenOptions::paperMethod();
   opt.method = es::Method::Extended;
   Vec3 target;
   ASSERT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::Moved);  // guard off
@@ -402,7 +402,7 @@ TEST(Extended, TurnedBorderStripReturnsToTheZone) {
       if (cx < 1.1) zones.faceRegion[f] = 0;
       stripFaces += cx > 1.0 && cx < 1.1;
     }
-    es::SharpenOptions opt;
+    es::SharpenOptions opt = es::SharpenOptions::paperMethod();
     opt.method = es::Method::Extended;
     opt.supportRings = 4;  // enough flat faces to outweigh the strip in the fit
     const es::VertexFaceTable vf(m);
@@ -440,7 +440,7 @@ TEST(Extended, SeededFitIgnoresAnAbsorbedChamferStrip) {
   const std::size_t border = std::size_t(kNy / 2) * (kNx + 1) + 11;  // x = 1.1, middle row
   ASSERT_TRUE(nearZone[border]);
   std::vector<int> stamp(m.face.size(), -1);
-  es::SharpenOptions opt;
+  es::SharpenOptions opt = es::SharpenOptions::paperMethod();
   opt.method = es::Method::Extended;
   const es::Vec3 up(0, 0, 1);
 

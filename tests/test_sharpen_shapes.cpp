@@ -149,7 +149,7 @@ TEST(SharpenShapes, SphereWithoutFeaturesIsEssentiallyUnchanged) {
   shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, 0.02), input);
   vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(output, input);
   vcg::tri::UpdateTopology<es::Mesh>::FaceFace(output);
-  const es::SharpenReport r = es::sharpen(output, {});
+  const es::SharpenReport r = es::sharpen(output, es::SharpenOptions::paperMethod());
   const es::DistanceReport before = es::measureDistance(input, reference);
   const es::DistanceReport after = es::measureDistance(output, reference);
   std::printf("sphere: chamfer edges %zu, moved %zu | max %.4f%% -> %.4f%%, rms %.5f%% -> %.5f%%\n",

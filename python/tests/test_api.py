@@ -53,7 +53,7 @@ def test_round_trip_float32_and_float64(cube):
     # The paper's method moves only the inserted vertices: the original ones keep
     # their index and position (in either precision).
     for vertices in (v32, v32.astype(np.float64)):
-        out = es.sharpen(vertices, f)[0]
+        out = es.sharpen(vertices, f, method="paper")[0]
         assert len(out) > len(vertices) and np.array_equal(out[: len(vertices)], vertices)
     # The result is a valid input again (a second pass finds what is left).
     es.sharpen(*out32[:2], method="extended")
@@ -254,8 +254,8 @@ BAD_OPTIONS = [
     ({"support_rings": 2.5}, es.InputError, "support_rings must be a whole number"),
     ({"support_rings": 0}, es.InputError, "support_rings must be in \\[1, 20\\]"),
     ({"colorize": 2}, es.InputError, "colorize must be true or false"),
-    ({"method": "best"}, es.InputError, "method has no such choice 'best' \\('paper', 'extended'\\)"),
-    ({"method": 1}, TypeError, "method must be one of 'paper', 'extended'"),
+    ({"method": "best"}, es.InputError, "method has no such choice 'best' \\('paper', 'extended', 'auto'\\)"),
+    ({"method": 1}, TypeError, "method must be one of 'paper', 'extended', 'auto'"),
     ({"multiplier": "2"}, TypeError, "multiplier must be a number, got str"),
     ({"multiplier": None}, TypeError, "multiplier must be a number, got NoneType"),
     ({"multiplier": [2]}, TypeError, "multiplier must be a number, got list"),

@@ -126,7 +126,7 @@ TEST_P(SharpenInvariants, HoldOnShapeUnderMotionScaleAndResharpening) {
   Mesh input;
   shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, c.fraction), input);
   const double diagonal = es_reliability::bboxDiagonal(input);
-  es::SharpenOptions opt;
+  es::SharpenOptions opt = es::SharpenOptions::paperMethod();
   opt.smoothMultiplier = c.multiplier;
   opt.colorize = true;  // marks the vertices the self-intersection guard moved back
 
@@ -240,8 +240,8 @@ TEST(SharpenInvariantsComponents, TwoCopiesSharpenLikeOne) {
   vcg::tri::Append<Mesh, Mesh>::Mesh(two, shifted);
   vcg::tri::UpdateTopology<Mesh>::FaceFace(two);
   copy(single, one);
-  const es::SharpenReport r1 = es::sharpen(single, {});
-  const es::SharpenReport r2 = es::sharpen(two, {});
+  const es::SharpenReport r1 = es::sharpen(single, es::SharpenOptions::paperMethod());
+  const es::SharpenReport r2 = es::sharpen(two, es::SharpenOptions::paperMethod());
   EXPECT_EQ(r2.filters.chamferEdges, 2 * r1.filters.chamferEdges);
   EXPECT_EQ(r2.outputFaces, 2 * r1.outputFaces);
   // The self-intersection guard's retreats decide touching contacts, which
@@ -303,7 +303,7 @@ TEST(SharpenInvariantsComponents, OpenMeshKeepsItsBoundary) {
     return edges;
   };
   const auto before = boundaryEdges(input);
-  const es::SharpenReport r = es::sharpen(output, {});
+  const es::SharpenReport r = es::sharpen(output, es::SharpenOptions::paperMethod());
   EXPECT_EQ(
       es_reliability::sharpenProblem(input, output, r, es::SharpenOptions{}.degenerateAngleRad),
       "");

@@ -62,7 +62,7 @@ TEST_P(SharpenNoise, NeverWorseThanItsInput) {
 
   vcg::tri::Append<Mesh, Mesh>::MeshCopy(output, input);
   vcg::tri::UpdateTopology<Mesh>::FaceFace(output);
-  const es::SharpenReport r = es::sharpen(output, {});
+  const es::SharpenReport r = es::sharpen(output, es::SharpenOptions::paperMethod());
   EXPECT_EQ(
       es_reliability::sharpenProblem(input, output, r, es::SharpenOptions{}.degenerateAngleRad),
       "");
