@@ -29,6 +29,7 @@ and are skipped with a note without it.
 import argparse
 import concurrent.futures
 import glob
+import hashlib
 import json
 import math
 import os
@@ -42,11 +43,12 @@ SOURCE = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
 import meshlab  # noqa: E402
 
-METHODS = ("paper", "extended")
+METHODS = ("paper", "extended", "auto")
 # Every run is one of these variants of the CLI (the name is the run's "method").
 # The strict plane guard and the sampling-grid guard are opt-in: they run at the default
 # multiplier only.
 VARIANTS = {"paper": ["--method", "paper"], "extended": ["--method", "extended"],
+            "auto": ["--method", "auto"],
             "extended-strict": ["--method", "extended", "--strict"],
             "extended-grid": ["--method", "extended", "--grid-guard"],
             "extended-strict-grid": ["--method", "extended", "--strict", "--grid-guard"]}
@@ -194,16 +196,72 @@ def run_json(cmd, timeout):
         return None, seconds, f"bad JSON: {e}"
 
 
-def measure(tools, mesh, reference, timeout, samples=None):
+class DistanceMemo:
+    """mesh-distance's answers keyed by what determines them: the two files' contents, the
+    arguments and the mesh-distance binary itself. Outputs that several variants share are
+    measured once (within a run), and the distances of the cached meshes (inputs, the peer's
+    outputs) are kept in the cache between runs, like those meshes; the sharpener's outputs are
+    measured anew by every run. A rebuilt mesh-distance or a changed file misses the memo."""
+
+    def __init__(self, path, binary):
+        self.path = path
+        self.lock = threading.Lock()
+        self.entries = {}
+        self.kept = set()
+        self.tool = _file_digest(binary)
+        if os.path.exists(path):
+            with open(path) as f:
+                self.entries = json.load(f)
+            self.kept = set(self.entries)
+
+    def key(self, mesh, reference, args):
+        return "|".join([self.tool, _file_digest(mesh), _file_digest(reference), *args])
+
+    def get(self, key):
+        with self.lock:
+            return self.entries.get(key)
+
+    def put(self, key, value, keep):
+        with self.lock:
+            self.entries[key] = value
+            if keep:
+                self.kept.add(key)
+
+    def save(self):
+        with self.lock:
+            with open(self.path + ".tmp", "w") as f:
+                json.dump({k: v for k, v in self.entries.items() if k in self.kept}, f)
+            os.replace(self.path + ".tmp", self.path)
+
+
+def _file_digest(path):
+    h = hashlib.sha1()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+_memo = [None]  # the run's DistanceMemo (set in main)
+
+
+def measure(tools, mesh, reference, timeout, samples=None, keep=False):
     """Two-sided distance. DISTANCE_SAMPLES in MeshLab's mode; the uniform mode keeps
-    mesh-distance's own default, which the floors of the older tests were measured with."""
+    mesh-distance's own default, which the floors of the older tests were measured with.
+    keep: `mesh` is a cached input whose distance the memo keeps between runs."""
     if samples is None and _distance_sampling[1] == "meshlab":
         samples = DISTANCE_SAMPLES
     count = ["--samples", str(samples)] if samples is not None else []
-    d, _, err = run_json([tools.distance, mesh, reference, "--json", *_distance_sampling, *count],
-                         timeout)
+    args = ["--json", *_distance_sampling, *count]
+    memo = _memo[0]
+    key = memo.key(mesh, reference, args) if memo else None
+    d = memo.get(key) if memo else None
     if d is None:
-        return None, err
+        d, _, err = run_json([tools.distance, mesh, reference, *args], timeout)
+        if d is None:
+            return None, err
+        if memo:
+            memo.put(key, d, keep)
     return {"max": d["symmetric"]["max_percent"], "mean": d["symmetric"]["mean_percent"],
             "rms": d["symmetric"]["rms_percent"], "max_fwd": d["forward"]["max_percent"],
             "max_bwd": d["backward"]["max_percent"], "faces": d["a"]["faces"],
@@ -412,9 +470,9 @@ def make_peer_output(server, model, spec, in_path, cache, refresh, timeout):
     return (out if ok else None), info
 
 
-def measure_run(tools, out, reference, timeout, row):
+def measure_run(tools, out, reference, timeout, row, keep=False):
     """Measures a run's output against the reference into its row; False when that failed."""
-    d, err = measure(tools, out, reference, timeout)
+    d, err = measure(tools, out, reference, timeout, keep=keep)
     if d is None:
         row.update(status="measure failed", why=err)
         return False
@@ -431,7 +489,7 @@ def measure_peer(tools, model, in_path, peer, timeout):
         row.update(status="peer failed", why=info.get("why", info["status"]))
         return row
     row["seconds"] = info.get("seconds")
-    measure_run(tools, out, model.reference, timeout, row)
+    measure_run(tools, out, model.reference, timeout, row, keep=True)
     return row
 
 
@@ -472,7 +530,7 @@ def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout, pee
             "res_value": spec.res_value, "order": spec.order, "make": info, "runs": []}
     if in_path is None:
         return case
-    d, err = measure(tools, in_path, model.reference, timeout)
+    d, err = measure(tools, in_path, model.reference, timeout, keep=True)
     if d is None:
         case["make"] = dict(info, status="failed", why=f"input not measurable: {err}")
         return case
@@ -487,7 +545,7 @@ def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout, pee
 
 
 def diagonal(tools, path):
-    d, err = measure(tools, path, path, 300, samples=4)
+    d, err = measure(tools, path, path, 300, samples=4, keep=True)
     if d is None:
         raise RuntimeError(f"{path}: {err}")
     return d["diag"]
@@ -510,6 +568,8 @@ def main():
     ap.add_argument("--distance-sampling", choices=("meshlab", "uniform"), default="meshlab",
                     help="mesh-distance --sampling: meshlab (as MeshLab's Hausdorff Distance "
                     "filter, the default) or uniform (the project's own spreading)")
+    ap.add_argument("--variants", help="comma-separated variants to run (default all: "
+                    + ", ".join(VARIANTS) + ")")
     ap.add_argument("--no-peer", action="store_true",
                     help="do not run MeshLab's UnSharp Mask Geometry (the peer row)")
     ap.add_argument("--jobs", type=int, default=2, help="parallel sharpen/measure jobs")
@@ -517,6 +577,9 @@ def main():
     ap.add_argument("--refresh", action="store_true", help="remake the cached MeshLab inputs")
     ap.add_argument("--results", help="results JSON (default CACHE/results.json)")
     ap.add_argument("--no-report", action="store_true", help="do not write docs/results.md")
+    ap.add_argument("--inputs-only", action="store_true",
+                    help="only make (or check) the cached inputs and the peer's outputs and "
+                    "measure them; no sharpening, no report")
     ap.add_argument("--report-only", action="store_true",
                     help="only rewrite docs/results.md and the figures from the results JSON")
     ap.add_argument("--docs", default=os.path.join(SOURCE, "docs"), help="docs directory")
@@ -527,6 +590,7 @@ def main():
     cache = os.path.abspath(args.cache or os.path.join(build, "quality-cache"))
     os.makedirs(os.path.join(cache, "outputs"), exist_ok=True)
     tools = Tools(build)
+    _memo[0] = DistanceMemo(os.path.join(cache, "distances.json"), tools.distance)
     server = meshlab.Server(tools.server, os.path.join(cache, "home"))
     if not server.available():
         log(f"meshlabserver not available ({tools.server}, xvfb-run): MeshLab inputs skipped")
@@ -539,6 +603,9 @@ def main():
             report.write(json.load(f), tools, cache, args.docs)
         return
 
+    if args.variants:
+        for name in [v for v in VARIANTS if v not in args.variants.split(",")]:
+            del VARIANTS[name]
     only = set(args.models.split(",")) if args.models else None
     models = collect_models(tools, cache, os.path.abspath(args.shared), args.fast, only)
     specs = input_specs(args.fast)
@@ -583,6 +650,18 @@ def main():
         peers.append(peer if use_peer else None)
     log(f"inputs ready after {time.monotonic() - started:.0f} s; sharpening and measuring "
         f"{sum(1 for p in plan if p[2][0])} inputs")
+    if args.inputs_only:
+        for (model, _, (in_path, _), _), peer in zip(plan, peers):
+            if in_path:
+                measure(tools, in_path, model.reference, args.timeout, keep=True)
+            if peer is not None:
+                made, _ = peer()
+                if made:
+                    measure(tools, made, model.reference, args.timeout, keep=True)
+            _memo[0].save()
+        log(f"inputs, the peer's outputs and their distances cached after "
+            f"{time.monotonic() - started:.0f} s")
+        return
 
     # (b, c) sharpen + measure, in parallel; the validation half first. The results file is
     # rewritten as cases finish (marked partial), so an interrupted run still leaves a report
@@ -618,8 +697,10 @@ def main():
             done[futures[fut]] = fut.result()
             if len(done) % 5 == 0 and len(done) < len(work):
                 save(results_of([done[i] for i in sorted(done)], partial=True))
+                _memo[0].save()
     results = results_of([done[i] for i in sorted(done)], partial=False)
     save(results)
+    _memo[0].save()
     log(f"results: {out} ({results['seconds']:.0f} s)")
 
     if not args.no_report:

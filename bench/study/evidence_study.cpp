@@ -1,0 +1,100 @@
+// The study behind the auto method's evidence guard (feature_evidence.h):
+// sharpens an input as the auto method does but with the guard not reverting
+// anything, and prints one JSON line per feature with its evidence (Feature)
+// and what its moves did against the true shape: the summed and the largest
+// change of the moved vertices' distance to the reference, in sample
+// spacings (negative: closer). bench/study/evidence_study.py runs it over the
+// quality benchmark's cached inputs of one half.
+//   evidence-study INPUT REFERENCE [CASE-NAME]
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "edge_sharpener/edge_sharpener.h"
+#include "edge_sharpener/util/mesh_types.h"
+#include "mesh_distance.h"
+#include "mesh_io.h"
+
+namespace es = edge_sharpener;
+
+int main(int argc, char **argv) {
+  if (argc < 3) {
+    std::cerr << "usage: evidence-study INPUT REFERENCE [CASE-NAME]\n";
+    return 2;
+  }
+  const std::string name = argc > 3 ? argv[3] : argv[1];
+  try {
+    es::Mesh m, reference;
+    es::io::loadMesh(argv[1], m);
+    es::io::loadMesh(argv[2], reference);
+    vcg::tri::UpdateBounding<es::Mesh>::Box(m);
+    vcg::tri::UpdateBounding<es::Mesh>::Box(reference);
+    vcg::tri::UpdateNormal<es::Mesh>::PerFaceNormalized(reference);
+
+    es::SharpenOptions opt;
+    opt.method = es::Method::Auto;
+    // The same stages as sharpen(), up to the evidence guard.
+    es::SharpenReport report = es::detail::validate(m, opt);
+    es::MeshLabels<es::Mesh> labels(m);
+    es::FeatureZones zones;
+    es::detail::detect(m, labels, opt, report, zones);
+    const es::SplitPlan plan = es::planSplits(m, labels);
+    report.subdivision = es::subdivide(m, plan, labels);
+    es::VertexMoves<es::Mesh> moves(m, plan, labels, true);
+    es::placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt, zones.support);
+    es::refineExtendedPlacement(m, moves, zones, opt, report);
+    // The evidence as the guard sees it (before the cleanup); the harm after every guard.
+    std::vector<es::Feature> features;
+    const auto featureOf = es::measureFeatures(m, moves, zones.support, features);
+    const auto weak = es::weakFeatures(plan, features, featureOf, opt);
+    const double refused = es::refusedFraction(features);
+    report.cleanup = es::removeDegenerateTriangles(m, moves, opt.degenerateAngleRad);
+    report.intersections =
+        es::revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
+
+    vcg::tri::UpdateBounding<es::Mesh>::Box(m);
+    vcg::tri::HausdorffSampler<es::Mesh> sampler(&reference);
+    sampler.unifGridFace.Set(reference.face.begin(), reference.face.end(),
+                             es::closestFaceGridBox(reference, m));
+    sampler.dist_upper_bound = reference.bbox.Diag();
+    const double spacing = zones.support.sampleSpacing;
+    const auto distance = [&](const es::Vec3 &p) {
+      return double(sampler.AddSample(vcg::Point3f::Construct(p), vcg::Point3f(0, 0, 0)));
+    };
+    std::vector<double> sum(features.size(), 0), worst(features.size(), -1e30),
+        before(features.size(), 0);
+    std::vector<char> seen(plan.originalVertexCount, 0);
+    const auto account = [&](std::size_t c, std::size_t v) {
+      const double d0 = distance(moves.exactRest(v)), d1 = distance(es::positionOf(&m.vert[v]));
+      sum[c] += (d1 - d0) / spacing;
+      before[c] += d0 / spacing;
+      worst[c] = std::max(worst[c], (d1 - d0) / spacing);
+    };
+    for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+      const std::size_t v = moves.firstInserted() + k;
+      if (m.vert[v].IsD()) continue;
+      if (moves.isMoved(v)) account(featureOf[k], v);
+      for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
+        const std::size_t s = plan.inserted[k].original[i];
+        if (seen[s] || m.vert[s].IsD() || !moves.isMoved(s)) continue;
+        seen[s] = 1;
+        account(featureOf[k], s);
+      }
+    }
+    for (std::size_t c = 0; c < features.size(); ++c) {
+      const es::Feature &f = features[c];
+      if (f.moved == 0) continue;
+      std::printf(
+          "{\"case\": \"%s\", \"refused\": %.4f, \"feature\": %zu, \"corner\": %d, "
+          "\"vertices\": %zu, \"moved\": %zu, "
+          "\"median_off_plane\": %.4f, \"max_off_plane\": %.4f, \"median_displacement\": %.4f, "
+          "\"weak\": %d, \"harm_sum\": %.5f, \"harm_max\": %.5f, \"before_sum\": %.5f}\n",
+          name.c_str(), refused, c, int(f.corner), f.vertices, f.moved, f.medianOffPlane,
+          f.maxOffPlane, f.medianDisplacement, int(weak[c]), sum[c], worst[c], before[c]);
+    }
+  } catch (const std::exception &e) {
+    std::cerr << "evidence-study: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,67 @@
+#!/usr/bin/env python3
+"""Runs evidence-study over the quality benchmark's cached inputs of one half and writes
+one JSON line per feature (bench/study/evidence_study.cpp), for choosing the evidence
+guard's rule on the tuning half and checking it on the validation half.
+
+  bench/study/evidence_study.py --build BUILD --half tuning|validation --out FILE.jsonl
+"""
+import argparse
+import concurrent.futures
+import glob
+import json
+import os
+import subprocess
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE = os.path.dirname(os.path.dirname(HERE))
+
+
+def references(cache, shared):
+    refs = {}
+    for p in glob.glob(os.path.join(cache, "generated", "*_reference.ply")):
+        refs[os.path.basename(p)[:-len("_reference.ply")]] = p
+    for d in (shared, os.path.join(SOURCE, "test_meshes", "real")):
+        for p in glob.glob(os.path.join(d, "*")):
+            stem, ext = os.path.splitext(os.path.basename(p))
+            if ext.lower() in (".off", ".obj", ".stl", ".ply"):
+                refs[stem] = p
+    return refs
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--build", default=os.path.join(SOURCE, "build"))
+    ap.add_argument("--shared", default=os.path.join(SOURCE, "..", "shared", "meshes"))
+    ap.add_argument("--half", choices=("tuning", "validation"), required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--jobs", type=int, default=2)
+    args = ap.parse_args()
+    cache = os.path.join(args.build, "quality-cache")
+    split = json.load(open(os.path.join(SOURCE, "bench", "quality", "split.json")))
+    names = set(split[args.half]) - {"chamfer-cube"}
+    refs = references(cache, args.shared)
+    tool = os.path.join(args.build, "bench", "study", "evidence-study")
+    jobs = []
+    for name in sorted(names):
+        if name not in refs:
+            continue
+        jobs.append((refs[name], refs[name], f"{name}__asis"))
+        mc = os.path.join(cache, "generated", f"{name}_mc1.ply")
+        if os.path.exists(mc):
+            jobs.append((mc, refs[name], f"{name}__mc_1pct"))
+        for p in sorted(glob.glob(os.path.join(cache, "inputs", f"{name}__*.ply"))):
+            key = os.path.basename(p)[:-4]
+            if key.count("__") == 1:  # not a peer's output
+                jobs.append((p, refs[name], key))
+
+    def run(job):
+        p = subprocess.run([tool, *job], capture_output=True, text=True)
+        return p.stdout
+    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool, open(args.out, "w") as out:
+        for text in pool.map(run, jobs):
+            out.write(text)
+    print(f"{len(jobs)} cases -> {args.out}")
+
+
+if __name__ == "__main__":
+    main()
