@@ -16,7 +16,7 @@ FLOOR = 1e-4  # % of the diagonal
 # References without sharp features: they are in the worse counts (they must not be
 # damaged) but not in the geometric means (there is nothing to reduce).
 NO_SHARP_FEATURES = ("sphere", "rocker-arm")
-COLUMNS = (("paper", "paper"), ("extended", "extended"), ("extended-strict", "strict"),
+COLUMNS = (("paper", "paper"), ("auto", "auto (default)"), ("extended", "extended"), ("extended-strict", "strict"),
            ("extended-grid", "grid"), ("extended-strict-grid", "strict + grid"),
            ("unsharp-mask", "UnSharp Mask (MeshLab)"))
 FAMILY_ORDER = ("umr", "mc", "vdb", "ier", "csg", "poisson", "scan", "rimls", "asis")

@@ -15,7 +15,9 @@ PAPER_CLAIM = ("fandisk remeshed by SwingWrapper: max error 0.89% -> 0.43% of th
 WORSE_TOLERANCE = 0.01  # "worse" = more than 1% above the input (sampling noise is below 0.3%)
 # The runs' variants (run.py VARIANTS): the two methods, and the extended method with the
 # opt-in strict plane guard (default multiplier only).
-VARIANTS = ("paper", "extended", "extended-strict")
+VARIANTS = ("paper", "auto", "extended", "extended-strict")
+LABELS = {"paper": "paper", "auto": "auto (default)", "extended": "extended",
+          "extended-strict": "strict"}
 STRICT = "extended-strict"
 # The opt-in sampling-grid guard, each against the variant it is added to.
 GRID_PAIRS = (("extended", "extended-grid"), ("extended-strict", "extended-strict-grid"))
@@ -111,8 +113,12 @@ def write(results, tools, cache, docs):
       "*max* is the Hausdorff distance (the larger one-sided maximum); *mean* and *RMS* average "
       "the two sides (RMS = sqrt((RMS_fwd² + RMS_bwd²)/2)). A reduction factor is before/after "
       "(×2 = error halved; below ×1 = worse; both floored at 1e-4% of the diagonal, the "
-      "measurement noise of float meshes, so an exact result does not give ×∞). *paper* and *extended* are the two methods of "
+      "measurement noise of float meshes, so an exact result does not give ×∞). *paper*, *auto* "
+      "(the default since issue 20) and *extended* are the three methods of "
       f"`edge-sharpener --method`, default parameters (multiplier {m:g}, length check on); "
+      "*auto* is the extended method with the evidence guard (a feature is kept only when "
+      "placement's tests agree along it and its samples lie on its planes; nothing is kept "
+      "when most moves are refused: `vcg_ext/edge_sharpener/guards/feature_evidence.h`); "
       "*strict* (*extended-strict*) is the extended method with the opt-in strict plane guard "
       "(`--method extended --strict`: border faces turned from their region's plane return to "
       "the zone, and a vertex whose source lies more than 0.3 median edge lengths off its plane "
@@ -233,9 +239,10 @@ def write(results, tools, cache, docs):
 
 
 def headline_table(fan, m):
-    rows = ["| input | res. | faces | max before | max paper | max extended | max strict | "
-            "RMS before | RMS paper | RMS extended | RMS strict |",
-            "|---|---|---|---|---|---|---|---|---|---|---|"]
+    rows = ["| input | res. | faces | max before | " +
+            " | ".join(f"max {LABELS[v]}" for v in VARIANTS) + " | RMS before | " +
+            " | ".join(f"RMS {LABELS[v]}" for v in VARIANTS) + " |",
+            "|---|---|---|---|" + "---|" * (2 * len(VARIANTS) + 1)]
     for c in fan:
         if c["input"] == "asis":
             continue
@@ -259,9 +266,9 @@ def sharp_cases(cases):
 
 
 def summary_table(cases, m):
-    rows = ["| input | n | paper: max | paper: RMS | paper worse | extended: max | extended: RMS "
-            "| extended worse | strict: max | strict: RMS | strict worse |",
-            "|---|---|---|---|---|---|---|---|---|---|---|"]
+    rows = ["| input | n | " + " | ".join(f"{LABELS[v]}: max | {LABELS[v]}: RMS | {LABELS[v]} worse"
+                                         for v in VARIANTS) + " |",
+            "|---|---|" + "---|" * (3 * len(VARIANTS))]
     groups = {}
     for c in sharp_cases(cases):
         groups.setdefault((c["input_title"], c["resolution"], c["order"]), []).append(c)
