@@ -47,7 +47,7 @@ sharpen_variants() {
   sed 's/name="colorize" type="RichBool" value="false"/name="colorize" type="RichBool" value="true"/' \
     "$mlx" >sharpen_colorize.mlx
   grep -q 'name="colorize" type="RichBool" value="true"' sharpen_colorize.mlx || fail "cannot derive sharpen_colorize.mlx"
-  sed -e 's/name="method" type="RichEnum" value="0"/name="method" type="RichEnum" value="1"/' \
+  sed -e 's/name="method" type="RichEnum" value="2"/name="method" type="RichEnum" value="1"/' \
     -e 's/name="strictPlaneGuard" type="RichBool" value="false"/name="strictPlaneGuard" type="RichBool" value="true"/' \
     "$mlx" >sharpen_strict.mlx
   [[ $(grep -c 'value="1"\|value="true"' sharpen_strict.mlx) -ge 3 ]] || fail "cannot derive sharpen_strict.mlx"

@@ -11,7 +11,8 @@ variant, and smoothed by MeshLab's UnSharp Mask Geometry (the peer). Asserted:
   deterministic: the margin leaves room for legitimate small changes of a method, not for a
   regression), and the count of worse outputs (run by families.is_worse: max up > 2% or RMS up
   > 1%) is no larger than measured then. A method that gets better passes; update MEASURED
-  when it does, so that the floors follow.
+  when it does, so that the floors follow. The auto method (the default) was measured with no
+  worse output in any of the three families (the no-harm rule, asserted as its worse count 0).
 """
 import checks  # first: puts bench/quality on sys.path
 import families
@@ -20,14 +21,14 @@ MARGIN = 0.9
 MULTIPLIER = 2.0
 # (input, resolution) -> method -> (max factor, RMS factor, worse count of 3), as measured
 MEASURED = {
-    ("vdb", "1%"): {"paper": (1.0, 1.034, 0), "extended": (2.155, 6.434, 0),
+    ("vdb", "1%"): {"auto": (1.060, 1.360, 0), "paper": (1.0, 1.034, 0), "extended": (2.155, 6.434, 0),
                     "extended-strict": (1.071, 2.277, 0), "extended-grid": (2.155, 6.434, 0),
                     "extended-strict-grid": (1.071, 2.277, 0), "unsharp-mask": (1.297, 1.429, 0)},
-    ("scan", "noise 0"): {"paper": (1.0, 0.990, 2), "extended": (0.881, 0.944, 3),
+    ("scan", "noise 0"): {"auto": (1.0, 1.0, 0), "paper": (1.0, 0.990, 2), "extended": (0.881, 0.944, 3),
                           "extended-strict": (1.0, 0.960, 3), "extended-grid": (0.881, 0.957, 3),
                           "extended-strict-grid": (1.0, 0.964, 3),
                           "unsharp-mask": (0.886, 0.883, 3)},
-    ("scan", "noise 0.2 voxel"): {"paper": (1.0, 0.989, 2), "extended": (0.943, 0.951, 3),
+    ("scan", "noise 0.2 voxel"): {"auto": (1.0, 1.0, 0), "paper": (1.0, 0.989, 2), "extended": (0.943, 0.951, 3),
                                   "extended-strict": (1.005, 0.962, 3),
                                   "extended-grid": (0.942, 0.962, 3),
                                   "extended-strict-grid": (1.005, 0.968, 2),
