@@ -134,6 +134,9 @@ def write(results, tools, cache, docs):
       "(CLI, one thread).")
     w("")
 
+    # ---- the default method against its targets (issue 20)
+    L.extend(families.default_section(results))
+
     # ---- generalization (issue 19): every family, validation half first
     L.extend(families.section(results, WORSE_CAUSES))
 
