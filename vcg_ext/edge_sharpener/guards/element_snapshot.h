@@ -1,8 +1,8 @@
-// The mesh's vertices and faces as they are at one point of sharpen(), to
-// return to it exactly. Valid while no element is added: the cleanup and the
-// intersection guard only move vertices, flip edges and flag elements
-// deleted, so the element arrays keep their addresses and the pointers the
-// elements hold (adjacency) stay right when the copies are written back.
+// The state of the mesh's vertices and faces at one point of sharpen(), to
+// return to it exactly: positions, connectivity, FF adjacency and flags.
+// Valid while no element is added: the cleanup and the intersection guard
+// only move vertices, flip edges and flag elements deleted, so the element
+// arrays keep their addresses.
 #pragma once
 
 #include <vcg/complex/algorithms/update/topology.h>
@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <vector>
 
@@ -22,28 +23,62 @@ namespace edge_sharpener {
 template <class MeshType>
 class ElementSnapshot {
  public:
-  ElementSnapshot(const MeshType &m, const MeshLabels<MeshType> &labels)
-      : vert_(m.vert), face_(m.face), vn_(m.vn), fn_(m.fn) {
-    placement_.reserve(m.vert.size());
-    for (const auto &v : m.vert) placement_.push_back(labels.placement[&v]);
+  ElementSnapshot(const MeshType &m, const MeshLabels<MeshType> &labels) : vn_(m.vn), fn_(m.fn) {
+    vertices_.reserve(m.vert.size());
+    for (const auto &v : m.vert) vertices_.push_back({v.cP(), v.cFlags(), labels.placement[&v]});
+    faces_.reserve(m.face.size());
+    for (const auto &f : m.face) {
+      FaceState s;
+      for (int k = 0; k < 3; ++k) {
+        s.vertex[k] = std::uint32_t(vcg::tri::Index(m, f.cV(k)));
+        s.adjacent[k] = std::uint32_t(vcg::tri::Index(m, f.cFFp(k)));
+        s.adjacentEdge[k] = std::int8_t(f.cFFi(k));
+      }
+      s.flags = f.cFlags();
+      faces_.push_back(s);
+    }
   }
 
-  /// Writes the copies back. \throws std::logic_error if elements were added.
+  /// Writes the states back. \throws std::logic_error if elements were added.
   void restore(MeshType &m, MeshLabels<MeshType> &labels) const {
-    if (m.vert.size() != vert_.size() || m.face.size() != face_.size())
+    if (m.vert.size() != vertices_.size() || m.face.size() != faces_.size())
       throw std::logic_error("ElementSnapshot: elements were added since the snapshot");
-    std::copy(vert_.begin(), vert_.end(), m.vert.begin());
-    std::copy(face_.begin(), face_.end(), m.face.begin());
+    for (std::size_t i = 0; i < vertices_.size(); ++i) {
+      auto &v = m.vert[i];
+      v.P() = vertices_[i].position;
+      v.Flags() = vertices_[i].flags;
+      labels.placement[&v] = vertices_[i].placement;
+    }
+    for (std::size_t i = 0; i < faces_.size(); ++i) {
+      auto &f = m.face[i];
+      const FaceState &s = faces_[i];
+      for (int k = 0; k < 3; ++k) {
+        f.V(k) = &m.vert[s.vertex[k]];
+        f.FFp(k) = &m.face[s.adjacent[k]];
+        f.FFi(k) = s.adjacentEdge[k];
+      }
+      f.Flags() = s.flags;
+    }
     m.vn = vn_;
     m.fn = fn_;
-    for (std::size_t i = 0; i < m.vert.size(); ++i) labels.placement[&m.vert[i]] = placement_[i];
   }
 
  private:
-  std::vector<typename MeshType::VertexType> vert_;
-  std::vector<typename MeshType::FaceType> face_;
+  // Only what the cleanup and the intersection guard change: positions,
+  // connectivity, adjacency, flags, placement outcomes.
+  struct VertexState {
+    typename MeshType::CoordType position;
+    int flags;
+    Placement placement;
+  };
+  struct FaceState {
+    std::array<std::uint32_t, 3> vertex, adjacent;
+    std::array<std::int8_t, 3> adjacentEdge;
+    int flags;
+  };
+  std::vector<VertexState> vertices_;
+  std::vector<FaceState> faces_;
   int vn_, fn_;
-  std::vector<Placement> placement_;
 };
 
 }  // namespace edge_sharpener
@@ -77,7 +112,8 @@ class InputFaces {
     std::vector<std::size_t> firstAppended(count);
     std::size_t next = triples_.size();  // the split appends children after the input faces
     for (std::size_t k = 0; k < count; ++k) {
-      children[k] = detail::childTriangles(plan.faces[k], triples_[plan.faces[k].face], n0);
+      const auto &t = triples_[plan.faces[k].face];
+      children[k] = detail::childTriangles(plan.faces[k], {t[0], t[1], t[2]}, n0);
       firstAppended[k] = next;
       next += children[k].size() - 1;
     }
@@ -100,7 +136,7 @@ class InputFaces {
         facesOf[v - n0].push_back(std::uint32_t(k));
         ok = ok && !m.vert[v].IsD() && !moves.isMoved(v);
       }
-      for (std::size_t v : triples_[plan.faces[k].face]) ok = ok && !moves.isMoved(v);
+      for (std::uint32_t v : triples_[plan.faces[k].face]) ok = ok && !moves.isMoved(v);
       for (std::size_t c = 0; ok && c < children[k].size(); ++c) {
         const auto &f = childAt(k, c);
         ok = !f.IsD();
@@ -133,7 +169,7 @@ class InputFaces {
   }
 
  private:
-  std::vector<std::array<std::size_t, 3>> triples_;
+  std::vector<std::array<std::uint32_t, 3>> triples_;
 };
 
 }  // namespace edge_sharpener
