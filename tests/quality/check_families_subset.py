@@ -1,10 +1,14 @@
 #!/usr/bin/env python3
 """Assertions on the new sampler families' fast subset (results JSON of run.py, issue 19).
 
-Three generated shapes (lblock_tilted, cylinder_block, pyramid), resampled by OpenVDB's voxel
-remesher at 1% and by TSDF depth scans at noise 0 and 0.2 voxel, sharpened by every method and
-variant, and smoothed by MeshLab's UnSharp Mask Geometry (the peer). Asserted:
-- every input was made, and is a closed 2-manifold (the sampler's own edge check);
+Three generated shapes (lblock_tilted, cylinder_block, cross_prism), resampled by OpenVDB's voxel
+remesher at 1%, by MeshLab's Isotropic Explicit Remeshing (features off) at 1% and Screened
+Poisson at depth 7, and by TSDF depth scans at noise 0 and 0.2 voxel (UMR and the project's
+marching cubes: the fast subset; CSG is not here: a test run got a non-manifold CSG of
+lblock_tilted that the sharpener refuses, where the benchmark's cached one is manifold), sharpened
+by every method and variant, and smoothed by MeshLab's UnSharp Mask Geometry (the peer).
+Asserted:
+- every input was made, and the project's samplers' are closed 2-manifolds (their own edge check);
 - every run succeeded: the sharpener accepted every input, the peer ran, both were measured;
 - per family and method, the geometric means of the max and RMS reduction factors are at least
   MARGIN times the ones measured when this test was written (MEASURED; the runs are
@@ -21,18 +25,26 @@ MARGIN = 0.9
 MULTIPLIER = 2.0
 # (input, resolution) -> method -> (max factor, RMS factor, worse count of 3), as measured
 MEASURED = {
-    ("vdb", "1%"): {"auto": (1.060, 1.360, 0), "paper": (1.0, 1.034, 0), "extended": (2.155, 6.434, 0),
-                    "extended-strict": (1.071, 2.277, 0), "extended-grid": (2.155, 6.434, 0),
-                    "extended-strict-grid": (1.071, 2.277, 0), "unsharp-mask": (1.297, 1.429, 0)},
-    ("scan", "noise 0"): {"auto": (1.0, 1.0, 0), "paper": (1.0, 0.990, 2), "extended": (0.881, 0.944, 3),
-                          "extended-strict": (1.0, 0.960, 3), "extended-grid": (0.881, 0.957, 3),
-                          "extended-strict-grid": (1.0, 0.964, 3),
-                          "unsharp-mask": (0.886, 0.883, 3)},
-    ("scan", "noise 0.2 voxel"): {"auto": (1.0, 1.0, 0), "paper": (1.0, 0.989, 2), "extended": (0.943, 0.951, 3),
-                                  "extended-strict": (1.005, 0.962, 3),
-                                  "extended-grid": (0.942, 0.962, 3),
-                                  "extended-strict-grid": (1.005, 0.968, 2),
-                                  "unsharp-mask": (0.889, 0.883, 3)},
+    ("vdb", "1%"): {"auto": (1.060, 1.332, 0), "paper": (1.000, 1.030, 0),
+        "extended": (1.647, 3.019, 0), "extended-strict": (1.071, 1.648, 0),
+        "extended-grid": (1.647, 3.019, 0), "extended-strict-grid": (1.071, 1.648, 0),
+        "unsharp-mask": (1.177, 1.397, 0)},
+    ("ier", "1%"): {"auto": (3.233, 30.713, 0), "paper": (1.702, 7.853, 0),
+        "extended": (3.233, 30.852, 0), "extended-strict": (3.233, 30.848, 0),
+        "extended-grid": (3.233, 30.852, 0), "extended-strict-grid": (3.233, 30.848, 0),
+        "unsharp-mask": (1.240, 1.332, 0)},
+    ("poisson", "depth 7"): {"auto": (1.029, 1.066, 0), "paper": (1.014, 1.064, 0),
+        "extended": (1.196, 1.380, 0), "extended-strict": (1.137, 1.339, 0),
+        "extended-grid": (1.074, 1.199, 0), "extended-strict-grid": (1.041, 1.186, 0),
+        "unsharp-mask": (1.117, 1.171, 0)},
+    ("scan", "noise 0"): {"auto": (1.000, 1.000, 0), "paper": (1.000, 0.992, 2),
+        "extended": (0.881, 0.946, 3), "extended-strict": (1.000, 0.960, 3),
+        "extended-grid": (0.881, 0.949, 3), "extended-strict-grid": (1.000, 0.960, 3),
+        "unsharp-mask": (0.890, 0.880, 3)},
+    ("scan", "noise 0.2 voxel"): {"auto": (1.000, 1.000, 0), "paper": (1.002, 0.989, 2),
+        "extended": (0.965, 0.958, 3), "extended-strict": (1.003, 0.966, 3),
+        "extended-grid": (0.966, 0.963, 3), "extended-strict-grid": (1.003, 0.967, 2),
+        "unsharp-mask": (0.891, 0.879, 3)},
 }
 SHAPES = 3
 
@@ -48,7 +60,7 @@ def main():
             failures.append(f"{name}: input not made: {mk.get('why', mk['status'])}")
             continue
         sampler = mk.get("sampler", {})
-        if not sampler.get("closed_manifold"):
+        if c["input"] in ("vdb", "scan") and not sampler.get("closed_manifold"):
             failures.append(f"{name}: not a closed 2-manifold: {sampler}")
         for r in c["runs"]:
             if r["status"] != "ok":

@@ -95,9 +95,11 @@ class InputFaces {
  public:
   explicit InputFaces(const MeshType &m) {
     triples_.reserve(m.face.size());
+    const auto index = [&](const typename MeshType::VertexType *v) {
+      return std::uint32_t(vcg::tri::Index(m, v));
+    };
     for (const auto &f : m.face)
-      triples_.push_back(
-          {vcg::tri::Index(m, f.cV(0)), vcg::tri::Index(m, f.cV(1)), vcg::tri::Index(m, f.cV(2))});
+      triples_.push_back({index(f.cV(0)), index(f.cV(1)), index(f.cV(2))});
   }
 
   /// Gives back its input face to every split face whose vertices all rest
