@@ -256,7 +256,7 @@ int main(int argc, char **argv) {
         ->Iterations(iterations);
     for (int t = 1; t <= hardwareThreads(); ++t)
       benchmark::RegisterBenchmark(("core/" + faces + "/threads:" + std::to_string(t)).c_str(),
-                                   benchCore, path, t, es::SharpenOptions{})
+                                   benchCore, path, t, es::SharpenOptions::paperMethod())
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond)
           ->Iterations(iterations);
@@ -264,7 +264,10 @@ int main(int argc, char **argv) {
     extended.method = es::Method::Extended;
     es::SharpenOptions strict = extended;
     strict.setStrictPlaneGuard(true);
-    for (const auto &[name, opt] : {std::pair{"extended/", extended}, std::pair{"strict/", strict}})
+    es::SharpenOptions autoMethod;  // the default
+    autoMethod.method = es::Method::Auto;
+    for (const auto &[name, opt] : {std::pair{"extended/", extended}, std::pair{"strict/", strict},
+                                    std::pair{"auto/", autoMethod}})
       benchmark::RegisterBenchmark((name + faces).c_str(), benchCore, path, hardwareThreads(), opt)
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond)
