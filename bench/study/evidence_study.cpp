@@ -44,10 +44,21 @@ int main(int argc, char **argv) {
     es::placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt, zones.support);
     es::refineExtendedPlacement(m, moves, zones, opt, report);
     // The evidence as the guard sees it (before the cleanup); the harm after every guard.
-    std::vector<es::Feature> features;
-    const auto featureOf = es::measureFeatures(m, moves, zones.support, features);
+    es::EvidenceGuard<es::Mesh> guard(m, moves, zones.support, opt);
+    std::vector<es::Feature> features = guard.features();
+    const std::vector<std::uint32_t> &featureOf = guard.featureOf();
+    es::measureFeatures(m, moves, zones.support, featureOf, features);
     const auto weak = es::weakFeatures(plan, features, featureOf, opt);
     const double refused = es::refusedFraction(features);
+    // Median distance of each feature's moves, in sample spacings.
+    std::vector<std::vector<double>> moveLengths(features.size());
+    for (std::size_t k = 0; k < featureOf.size(); ++k) {
+      const std::size_t v = moves.firstInserted() + k;
+      if (!m.vert[v].IsD() && moves.isMoved(v))
+        moveLengths[featureOf[k]].push_back(
+            (es::positionOf(&m.vert[v]) - plan.inserted[k].rest).Norm() /
+            zones.support.sampleSpacing);
+    }
     report.cleanup = es::removeDegenerateTriangles(m, moves, opt.degenerateAngleRad);
     report.intersections =
         es::revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
@@ -90,7 +101,8 @@ int main(int argc, char **argv) {
           "\"median_off_plane\": %.4f, \"max_off_plane\": %.4f, \"median_displacement\": %.4f, "
           "\"weak\": %d, \"harm_sum\": %.5f, \"harm_max\": %.5f, \"before_sum\": %.5f}\n",
           name.c_str(), refused, c, int(f.corner), f.vertices, f.moved, f.medianOffPlane,
-          f.maxOffPlane, f.medianDisplacement, int(weak[c]), sum[c], worst[c], before[c]);
+          f.maxOffPlane, es::detail::medianOf(moveLengths[c]), int(weak[c]), sum[c], worst[c],
+          before[c]);
     }
   } catch (const std::exception &e) {
     std::cerr << "evidence-study: " << e.what() << "\n";

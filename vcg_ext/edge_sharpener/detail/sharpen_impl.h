@@ -141,9 +141,11 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   detail::reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
   placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt, zones.support);
   if (usesFeatureZones(opt.method)) refineExtendedPlacement(m, moves, zones, opt, report);
+  std::optional<EvidenceGuard<MeshType>> evidence;
   if (input) {
+    evidence.emplace(m, moves, zones.support, opt);
     report.evidenceGuard = true;
-    report.evidence = revertWeakFeatures(m, moves, zones.support, opt);
+    report.evidence = evidence->revertWeakFeatures();
   }
 
   detail::reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
@@ -153,8 +155,7 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
                                              /*onlyWhereMoved=*/input.has_value());
   report.intersections =
       revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
-  if (beforeGuards &&
-      leaveMeshIfGuardsRefused(m, moves, zones.support, opt, *beforeGuards, report.evidence)) {
+  if (evidence && evidence->leaveMeshIfGuardsRefused(*beforeGuards, report.evidence)) {
     report.cleanup = {};  // undone
     report.intersections = {};
   }

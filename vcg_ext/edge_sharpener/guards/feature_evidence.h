@@ -44,8 +44,6 @@ struct Feature {
   /// lie on the planes its flanks extrapolate; a blend's, a curved face's or
   /// a scan's do not.
   double medianOffPlane = 0, maxOffPlane = 0;
-  /// Median distance of the moves, in sample spacings.
-  double medianDisplacement = 0;
 };
 
 /// Groups the inserted vertices into features. `regionOf` gives each source
@@ -102,44 +100,48 @@ inline double medianOf(std::vector<double> &values) {
 }
 }  // namespace detail
 
-/// The features of the split mesh and the evidence of each (Feature).
-/// \pre placement (and the extended refinement) has run.
+/// Counts, per feature, its inserted vertices still in the mesh and those
+/// placed on their planes (Feature::vertices, Feature::moved).
 template <class MeshType>
-std::vector<std::uint32_t> measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
-                                           const SupportPlanes &support,
-                                           std::vector<Feature> &features) {
-  const SplitPlan &plan = moves.plan();
-  const auto regionOf = [&](std::size_t v) -> long {
-    return v < support.region.size() ? support.region[v] : -1;
-  };
-  std::vector<std::uint32_t> feature = groupFeatures(plan, regionOf, features);
-  const double spacing = support.sampleSpacing > 0 ? support.sampleSpacing : 1.0;
-  std::vector<std::vector<double>> offPlane(features.size()), displacement(features.size());
+void countFeatureMoves(const MeshType &m, const VertexMoves<MeshType> &moves,
+                       const std::vector<std::uint32_t> &featureOf,
+                       std::vector<Feature> &features) {
+  for (Feature &f : features) f.vertices = f.moved = 0;
   const std::size_t first = moves.firstInserted();
-  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
-    const auto &v = m.vert[first + k];
-    if (v.IsD()) continue;
-    Feature &f = features[feature[k]];
-    ++f.vertices;
-    if (moves.isMoved(first + k)) {
-      ++f.moved;
-      displacement[feature[k]].push_back((positionOf(&v) - plan.inserted[k].rest).Norm() / spacing);
-    }
+  for (std::size_t k = 0; k < featureOf.size(); ++k) {
+    if (m.vert[first + k].IsD()) continue;
+    ++features[featureOf[k]].vertices;
+    features[featureOf[k]].moved += moves.isMoved(first + k);
+  }
+}
+
+/// The counts (countFeatureMoves) and how far each feature's source vertices
+/// lie from their planes, at their rest positions (Feature::medianOffPlane,
+/// Feature::maxOffPlane).
+template <class MeshType>
+void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
+                     const SupportPlanes &support, const std::vector<std::uint32_t> &featureOf,
+                     std::vector<Feature> &features) {
+  countFeatureMoves(m, moves, featureOf, features);
+  const SplitPlan &plan = moves.plan();
+  const double spacing = support.sampleSpacing > 0 ? support.sampleSpacing : 1.0;
+  std::vector<std::vector<double>> offPlane(features.size());
+  for (std::size_t k = 0; k < featureOf.size(); ++k) {
+    if (m.vert[moves.firstInserted() + k].IsD()) continue;
     for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
       const std::size_t s = plan.inserted[k].original[i];
       const Plane &pl = support.plane(s);
       if (pl.normal.SquaredNorm() == 0) continue;
-      offPlane[feature[k]].push_back(std::abs(pl.normal * (moves.exactRest(s) - pl.point)) /
-                                     spacing);
+      offPlane[featureOf[k]].push_back(std::abs(pl.normal * (moves.exactRest(s) - pl.point)) /
+                                       spacing);
     }
   }
   for (std::size_t c = 0; c < features.size(); ++c) {
     Feature &f = features[c];
+    f.maxOffPlane = 0;
     for (double d : offPlane[c]) f.maxOffPlane = std::max(f.maxOffPlane, d);
     f.medianOffPlane = detail::medianOf(offPlane[c]);
-    f.medianDisplacement = detail::medianOf(displacement[c]);
   }
-  return feature;
 }
 
 /// Whether a feature has too little evidence to be sharpened: too short to
@@ -191,68 +193,91 @@ inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<F
   return weak;
 }
 
-/// Sends back to rest every move of the features whose evidence is weak
-/// (featureEvidenceIsWeak): their inserted vertices (as
-/// Placement::WeakEvidence) and the zone vertices projected beside them.
-/// Runs after placement, before the cleanup: a feature left as it was is
-/// never touched by the cleanup's collapses and flips, so its faces are the
-/// input's exactly.
+/// The auto method's guard. The features are grouped once, from the split
+/// plan and the regions (they do not change); their evidence is measured
+/// after placement (revertWeakFeatures) and their moves counted again after
+/// the cleanup and the intersection guard (leaveMeshIfGuardsRefused).
 template <class MeshType>
-EvidenceStats revertWeakFeatures(MeshType &m, VertexMoves<MeshType> &moves,
-                                 const SupportPlanes &support, const SharpenOptions &opt) {
-  EvidenceStats stats;
-  std::vector<Feature> features;
-  const std::vector<std::uint32_t> feature = measureFeatures(m, moves, support, features);
-  const SplitPlan &plan = moves.plan();
-  stats.features = features.size();
-  stats.refusedFraction = refusedFraction(features);
-  stats.wholeMeshLeft = stats.refusedFraction > opt.maxRefusedFraction;
-  const std::vector<char> weak = weakFeatures(plan, features, feature, opt);
-  for (std::size_t c = 0; c < features.size(); ++c)
-    stats.weakFeatures += weak[c] && features[c].moved > 0;
-  const std::size_t first = moves.firstInserted();
-  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
-    if (!weak[feature[k]] || m.vert[first + k].IsD()) continue;
-    if (moves.isMoved(first + k)) {
-      moves.sendBack(first + k, Placement::WeakEvidence);
-      ++stats.reverted;
-    }
-    for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
-      const std::size_t v = plan.inserted[k].original[i];
-      if (!m.vert[v].IsD() && moves.isMoved(v)) {
-        moves.sendBack(v, Placement::Original);
-        ++stats.zoneReverted;
+class EvidenceGuard {
+ public:
+  /// \pre placement (and the extended refinement) has run.
+  EvidenceGuard(MeshType &m, VertexMoves<MeshType> &moves, const SupportPlanes &support,
+                const SharpenOptions &opt)
+      : m_(m), moves_(moves), support_(support), opt_(opt) {
+    const auto regionOf = [&](std::size_t v) -> long {
+      return v < support.region.size() ? support.region[v] : -1;
+    };
+    featureOf_ = groupFeatures(moves.plan(), regionOf, features_);
+  }
+
+  /// Sends back to rest every move of the features whose evidence is weak
+  /// (weakFeatures): their inserted vertices (as Placement::WeakEvidence)
+  /// and the zone vertices projected beside them. Runs before the cleanup: a
+  /// feature left as it was is never touched by the cleanup's collapses and
+  /// flips, so its faces are the input's exactly.
+  EvidenceStats revertWeakFeatures() {
+    EvidenceStats stats;
+    measureFeatures(m_, moves_, support_, featureOf_, features_);
+    const SplitPlan &plan = moves_.plan();
+    stats.features = features_.size();
+    stats.refusedFraction = refusedFraction(features_);
+    stats.wholeMeshLeft = stats.refusedFraction > opt_.maxRefusedFraction;
+    const std::vector<char> weak = weakFeatures(plan, features_, featureOf_, opt_);
+    for (std::size_t c = 0; c < features_.size(); ++c)
+      stats.weakFeatures += weak[c] && features_[c].moved > 0;
+    const std::size_t first = moves_.firstInserted();
+    for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+      if (!weak[featureOf_[k]] || m_.vert[first + k].IsD()) continue;
+      if (moves_.isMoved(first + k)) {
+        moves_.sendBack(first + k, Placement::WeakEvidence);
+        ++stats.reverted;
+      }
+      for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
+        const std::size_t v = plan.inserted[k].original[i];
+        if (!m_.vert[v].IsD() && moves_.isMoved(v)) {
+          moves_.sendBack(v, Placement::Original);
+          ++stats.zoneReverted;
+        }
       }
     }
+    return stats;
   }
-  return stats;
-}
 
-/// After the cleanup and the intersection guard: when they refused so many
-/// of the moves left that the mesh as a whole shows too little evidence
-/// (refusedFraction), the mesh returns to `beforeGuards` with every vertex at
-/// rest, the input's surface exactly (their collapses and flips undone).
-/// \return whether it did.
-template <class MeshType>
-bool leaveMeshIfGuardsRefused(MeshType &m, VertexMoves<MeshType> &moves,
-                              const SupportPlanes &support, const SharpenOptions &opt,
-                              const ElementSnapshot<MeshType> &beforeGuards, EvidenceStats &stats) {
-  std::vector<Feature> features;
-  measureFeatures(m, moves, support, features);
-  const double refused = refusedFraction(features);
-  if (!(refused > opt.maxRefusedFraction)) return false;
-  beforeGuards.restore(m, moves.labels());
-  stats.refusedFraction = refused;
-  stats.wholeMeshLeft = true;
-  const SplitPlan &plan = moves.plan();
-  for (std::size_t v = 0; v < moves.firstInserted() + plan.inserted.size(); ++v) {
-    if (m.vert[v].IsD() || !moves.hasRest(v) || !moves.isMoved(v)) continue;
-    const bool inserted = moves.isInserted(v);
-    moves.sendBack(v, inserted ? Placement::WeakEvidence : Placement::Original);
-    ++(inserted ? stats.reverted : stats.zoneReverted);
+  /// After the cleanup and the intersection guard: when they refused so
+  /// many of the moves left that the mesh as a whole shows too little
+  /// evidence (refusedFraction), the mesh returns to `beforeGuards` with
+  /// every vertex at rest, the input's surface exactly (their collapses and
+  /// flips undone). \return whether it did.
+  bool leaveMeshIfGuardsRefused(const ElementSnapshot<MeshType> &beforeGuards,
+                                EvidenceStats &stats) {
+    countFeatureMoves(m_, moves_, featureOf_, features_);
+    const double refused = refusedFraction(features_);
+    if (!(refused > opt_.maxRefusedFraction)) return false;
+    beforeGuards.restore(m_, moves_.labels());
+    stats.refusedFraction = refused;
+    stats.wholeMeshLeft = true;
+    const std::size_t end = moves_.firstInserted() + moves_.plan().inserted.size();
+    for (std::size_t v = 0; v < end; ++v) {
+      if (m_.vert[v].IsD() || !moves_.hasRest(v) || !moves_.isMoved(v)) continue;
+      const bool inserted = moves_.isInserted(v);
+      moves_.sendBack(v, inserted ? Placement::WeakEvidence : Placement::Original);
+      ++(inserted ? stats.reverted : stats.zoneReverted);
+    }
+    stats.weakFeatures = features_.size();
+    return true;
   }
-  stats.weakFeatures = features.size();
-  return true;
-}
+
+  /// The features and each inserted vertex's feature (for the study).
+  const std::vector<Feature> &features() const { return features_; }
+  const std::vector<std::uint32_t> &featureOf() const { return featureOf_; }
+
+ private:
+  MeshType &m_;
+  VertexMoves<MeshType> &moves_;
+  const SupportPlanes &support_;
+  const SharpenOptions &opt_;
+  std::vector<Feature> features_;
+  std::vector<std::uint32_t> featureOf_;
+};
 
 }  // namespace edge_sharpener
