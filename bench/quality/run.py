@@ -234,12 +234,23 @@ class DistanceMemo:
             os.replace(self.path + ".tmp", self.path)
 
 
+_digests = {}  # (path, size, mtime) -> sha1: a reference is measured against many times
+_digests_lock = threading.Lock()
+
+
 def _file_digest(path):
+    st = os.stat(path)
+    key = (os.path.abspath(path), st.st_size, st.st_mtime_ns)
+    with _digests_lock:
+        if key in _digests:
+            return _digests[key]
     h = hashlib.sha1()
     with open(path, "rb") as f:
         for block in iter(lambda: f.read(1 << 20), b""):
             h.update(block)
-    return h.hexdigest()
+    with _digests_lock:
+        _digests[key] = h.hexdigest()
+    return _digests[key]
 
 
 _memo = [None]  # the run's DistanceMemo (set in main)
