@@ -107,6 +107,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"reverted", r.evidence.reverted},
                      {"zone_reverted", r.evidence.zoneReverted},
                      {"refused_fraction", r.evidence.refusedFraction},
+                     {"median_lift", r.evidence.medianLift},
                      {"whole_mesh_left", r.evidence.wholeMeshLeft},
                      {"faces_given_back", r.evidence.facesGivenBack}};
   return j;

@@ -1,7 +1,7 @@
 // The auto method's evidence guard (guards/feature_evidence.h) on hand-made
-// split plans: which inserted vertices form one feature, when a feature's
-// evidence is weak, how a weak edge reaches its corners, and the mesh-wide
-// gate; no mesh needed.
+// split plans and triangles: which inserted vertices form one feature, when a
+// feature's evidence is weak, how far a move lifts the surface, how a weak
+// edge reaches its corners, and the mesh-wide gate; no mesh needed.
 #include <gtest/gtest.h>
 
 #include "edge_sharpener/guards/feature_evidence.h"
@@ -46,6 +46,8 @@ struct TwoStripsAndACorner {
     return es::groupFeatures(
         plan, [&](std::size_t v) { return region[v]; }, features);
   }
+  /// Grouped, with every inserted vertex moved and on its planes.
+  std::vector<std::uint32_t> groupAllMoved(std::vector<es::Feature> &features) const;
 };
 
 es::Feature feature(std::size_t vertices, std::size_t moved, double offPlane = 0,
@@ -59,6 +61,15 @@ es::Feature feature(std::size_t vertices, std::size_t moved, double offPlane = 0
 }
 
 }  // namespace
+
+std::vector<std::uint32_t> TwoStripsAndACorner::groupAllMoved(
+    std::vector<es::Feature> &features) const {
+  const auto featureOf = group(features);
+  features[featureOf[0]] = feature(4, 4);
+  features[featureOf[4]] = feature(3, 3);
+  features[featureOf[7]] = feature(1, 1, 0, true);
+  return featureOf;
+}
 
 TEST(FeatureEvidence, StripsBetweenDifferentRegionPairsAreSeparateFeatures) {
   TwoStripsAndACorner t;
@@ -114,11 +125,11 @@ TEST(FeatureEvidence, AWeakEdgeTakesItsCornerButNotTheOtherEdge) {
   features[b] = feature(3, 3);
   features[corner] = feature(1, 1, 0, true);
   es::SharpenOptions opt;
-  auto weak = es::weakFeatures(t.plan, features, featureOf, opt);
+  auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, opt);
   EXPECT_FALSE(weak[a] || weak[b] || weak[corner]);
 
   features[a] = feature(4, 4, /*offPlane=*/0.5);  // strip A lies off its planes
-  weak = es::weakFeatures(t.plan, features, featureOf, opt);
+  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, opt);
   EXPECT_TRUE(weak[a]);
   EXPECT_TRUE(weak[corner]);
   EXPECT_FALSE(weak[b]);
@@ -127,14 +138,57 @@ TEST(FeatureEvidence, AWeakEdgeTakesItsCornerButNotTheOtherEdge) {
 TEST(FeatureEvidence, TooManyRefusalsLeaveTheWholeMesh) {
   TwoStripsAndACorner t;
   std::vector<es::Feature> features;
-  const auto featureOf = t.group(features);
-  features[featureOf[0]] = feature(4, 4);
-  features[featureOf[4]] = feature(3, 3);
-  features[featureOf[7]] = feature(1, 1, 0, true);
+  const auto featureOf = t.groupAllMoved(features);
   es::SharpenOptions opt;
   opt.maxRefusedFraction = 0.4;
   opt.maxFeatureFallbackFraction = 1;        // strip B alone would pass
   features[featureOf[4]] = feature(30, 10);  // 20 of 35 refused overall
-  const auto weak = es::weakFeatures(t.plan, features, featureOf, opt);
+  const auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, opt);
   for (char w : weak) EXPECT_TRUE(w);
+}
+
+TEST(FeatureEvidence, MovesThatOnlySlideLeaveTheWholeMesh) {
+  TwoStripsAndACorner t;
+  std::vector<es::Feature> features;
+  const auto featureOf = t.groupAllMoved(features);
+  es::SharpenOptions opt;  // median lift at least 0.07
+  for (char w : es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.8, opt)) EXPECT_FALSE(w);
+  for (char w : es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, opt)) EXPECT_TRUE(w);
+  opt.minMedianLift = 0;  // off
+  for (char w : es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, opt)) EXPECT_FALSE(w);
+}
+
+TEST(FeatureEvidence, MedianLiftCountsOnlyTheMoves) {
+  EXPECT_DOUBLE_EQ(es::medianLift({-1, 0.9, -1, 0.7, 0.8}), 0.8);
+  EXPECT_DOUBLE_EQ(es::medianLift({-1, -1}), 1.0);  // nothing moved: nothing against it
+  EXPECT_DOUBLE_EQ(es::medianLift({}), 1.0);
+}
+
+// A 90-degree edge chamfered at 45 degrees: the flanks z = 0 (x <= 0) and
+// x = 0 (z <= 0) cut back by the chamfer from (-1, 0) to (0, -1) in (x, z).
+// Cutting the chamfer back moves its midpoint (-0.5, -0.5) to the edge at
+// the origin, by 1/sqrt(2); the nearest input face, the chamfer, is as far
+// from the edge: lift 1.
+TEST(FeatureEvidence, CuttingAChamferBackLiftsTheSurface) {
+  using T = vcg::Triangle3<double>;
+  const std::vector<T> chamfered{T({-1, 0, 0}, {-1, 1, 0}, {-3, 0, 0}),  // flank z = 0
+                                 T({0, 0, -1}, {0, 1, -1}, {0, 0, -3}),  // flank x = 0
+                                 T({-1, 0, 0}, {0, 0, -1}, {0, 1, -1}),
+                                 T({-1, 0, 0}, {0, 1, -1}, {-1, 1, 0})};  // chamfer
+  EXPECT_NEAR(es::moveLift({0, 0.5, 0}, {-0.5, 0.5, -0.5}, chamfered), 1.0, 1e-12);
+}
+
+// The same edge already sharp: the inserted vertex sat on a thin triangle
+// across the edge and its move slides it onto the edge, which lies on the
+// input's faces: nothing is lifted.
+TEST(FeatureEvidence, SlidingAlongASharpInputLiftsNothing) {
+  using T = vcg::Triangle3<double>;
+  const std::vector<T> sharp{T({0, 0, 0}, {0, 1, 0}, {-3, 0, 0}),   // flank z = 0
+                             T({0, 0, 0}, {0, 0, -3}, {0, 1, 0})};  // flank x = 0
+  EXPECT_NEAR(es::moveLift({0, 0.5, 0}, {-0.2, 0.5, 0}, sharp), 0.0, 1e-12);
+  // Half-way: a move along a face and then off it lifts by the part off it.
+  EXPECT_NEAR(es::moveLift({0.3, 0.5, 0}, {-0.3, 0.5, 0}, sharp), 0.5, 1e-12);
+  // A move of no length, or with no faces to measure against, counts as lifting.
+  EXPECT_EQ(es::moveLift({0, 0, 0}, {0, 0, 0}, sharp), 1.0);
+  EXPECT_EQ(es::moveLift({1, 0, 0}, {0, 0, 0}, {}), 1.0);
 }

@@ -38,26 +38,30 @@ int main(int argc, char **argv) {
     es::MeshLabels<es::Mesh> labels(m);
     es::FeatureZones zones;
     es::detail::detect(m, labels, opt, report, zones);
+    const es::InputFaces<es::Mesh> inputFaces(m);
     const es::SplitPlan plan = es::planSplits(m, labels);
     report.subdivision = es::subdivide(m, plan, labels);
     es::VertexMoves<es::Mesh> moves(m, plan, labels, true);
     es::placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt, zones.support);
     es::refineExtendedPlacement(m, moves, zones, opt, report);
     // The evidence as the guard sees it (before the cleanup); the harm after every guard.
-    es::EvidenceGuard<es::Mesh> guard(m, moves, zones.support, opt);
+    const es::InputSurface surface{zones.inputFaces, inputFaces.faceVertices()};
+    es::EvidenceGuard<es::Mesh> guard(m, moves, zones.support, surface, opt);
     std::vector<es::Feature> features = guard.features();
     const std::vector<std::uint32_t> &featureOf = guard.featureOf();
     es::measureFeatures(m, moves, zones.support, featureOf, features);
-    const auto weak = es::weakFeatures(plan, features, featureOf, opt);
+    const std::vector<double> lifts = es::liftsOfMoves(m, moves, surface);
+    const auto weak = es::weakFeatures(plan, features, featureOf, es::medianLift(lifts), opt);
     const double refused = es::refusedFraction(features);
-    // Median distance of each feature's moves, in sample spacings.
-    std::vector<std::vector<double>> moveLengths(features.size());
+    // Median distance and lift of each feature's moves (distance in sample spacings).
+    std::vector<std::vector<double>> moveLengths(features.size()), featureLifts(features.size());
     for (std::size_t k = 0; k < featureOf.size(); ++k) {
       const std::size_t v = moves.firstInserted() + k;
       if (!m.vert[v].IsD() && moves.isMoved(v))
         moveLengths[featureOf[k]].push_back(
             (es::positionOf(&m.vert[v]) - plan.inserted[k].rest).Norm() /
             zones.support.sampleSpacing);
+      featureLifts[featureOf[k]].push_back(lifts[k]);
     }
     report.cleanup = es::removeDegenerateTriangles(m, moves, opt.degenerateAngleRad);
     report.intersections =
@@ -96,13 +100,15 @@ int main(int argc, char **argv) {
       const es::Feature &f = features[c];
       if (f.moved == 0) continue;
       std::printf(
-          "{\"case\": \"%s\", \"refused\": %.4f, \"feature\": %zu, \"corner\": %d, "
+          "{\"case\": \"%s\", \"refused\": %.4f, \"mesh_lift\": %.4f, \"feature\": %zu, "
+          "\"corner\": %d, "
           "\"vertices\": %zu, \"moved\": %zu, "
           "\"median_off_plane\": %.4f, \"max_off_plane\": %.4f, \"median_displacement\": %.4f, "
-          "\"weak\": %d, \"harm_sum\": %.5f, \"harm_max\": %.5f, \"before_sum\": %.5f}\n",
-          name.c_str(), refused, c, int(f.corner), f.vertices, f.moved, f.medianOffPlane,
-          f.maxOffPlane, es::detail::medianOf(moveLengths[c]), int(weak[c]), sum[c], worst[c],
-          before[c]);
+          "\"median_lift\": %.4f, \"weak\": %d, \"harm_sum\": %.5f, \"harm_max\": %.5f, "
+          "\"before_sum\": %.5f}\n",
+          name.c_str(), refused, es::medianLift(lifts), c, int(f.corner), f.vertices, f.moved,
+          f.medianOffPlane, f.maxOffPlane, es::detail::medianOf(moveLengths[c]),
+          es::medianLift(featureLifts[c]), int(weak[c]), sum[c], worst[c], before[c]);
     }
   } catch (const std::exception &e) {
     std::cerr << "evidence-study: " << e.what() << "\n";

@@ -262,6 +262,13 @@ inline const std::vector<OptionSpec> &optionTable() {
        "chamfered sampling of sharp edges: a scan, a model already sharp, a smooth shape).",
        T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_REAL(maxRefusedFraction)},
+      {"min_median_lift", "--min-lift", "", "Minimum median lift",
+       "Auto method: nothing is sharpened when the moves mostly slide along the input's surface "
+       "instead of lifting it to sharp edges: the median distance of the new vertices' targets "
+       "from the input faces around them is below this fraction of the moves' length (a model "
+       "already sharp, whose curved faces sliding would only bend; 0: off).",
+       T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_REAL(minMedianLift)},
       {"max_feature_fallback_fraction", "--feature-fallback", "", "Feature fallback fraction",
        "Auto method: a feature (a chamfer strip with its corners) stays as it was when more "
        "than this fraction of its new vertices were kept at rest by the other tests.",

@@ -165,6 +165,11 @@ struct SharpenOptions {
   double maxFeatureOffPlaneSpacings = 0.15;
   /// ...or when it has fewer than this many inserted vertices.
   int minFeatureVertices = 3;
+  /// Nothing is sharpened either when the moves mostly slide along the
+  /// input's surface: the median distance of their targets from the input
+  /// faces around them is below this fraction of their length (a model
+  /// already sharp).
+  double minMedianLift = 0.07;
 
   // --- Extended method, strict plane guard (off by default; `--strict`) ---
 

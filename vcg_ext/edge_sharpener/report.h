@@ -100,7 +100,8 @@ struct EvidenceStats {
   std::size_t reverted = 0;        ///< inserted vertices sent back (counted in placement too)
   std::size_t zoneReverted = 0;    ///< projected zone vertices sent back
   double refusedFraction = 0;      ///< of the moved features' vertices, those refused
-  bool wholeMeshLeft = false;      ///< refusedFraction too high: nothing sharpened
+  double medianLift = 1;           ///< how far the moves lift the surface, per unit of length
+  bool wholeMeshLeft = false;      ///< too many refused, or too little lift: nothing sharpened
   std::size_t facesGivenBack = 0;  ///< split faces left at rest that got their input face back
 };
 
@@ -210,9 +211,10 @@ inline void formatGuards(std::ostream &s, const SharpenReport &r) {
     s << "evidence: " << r.evidence.weakFeatures << " of " << r.evidence.features
       << " features left as they were (" << r.evidence.reverted << " inserted and "
       << r.evidence.zoneReverted << " zone vertices sent back); "
-      << int(std::lround(100 * r.evidence.refusedFraction)) << "% of the moves refused"
-      << (r.evidence.wholeMeshLeft ? ": too many, the mesh is left as it was" : "") << "; "
-      << r.evidence.facesGivenBack << " split faces at rest given back their input face\n";
+      << int(std::lround(100 * r.evidence.refusedFraction)) << "% of the moves refused, "
+      << "median lift " << std::lround(100 * r.evidence.medianLift) / 100.0
+      << (r.evidence.wholeMeshLeft ? ": too little evidence, the mesh is left as it was" : "")
+      << "; " << r.evidence.facesGivenBack << " split faces at rest given back their input face\n";
 }
 
 }  // namespace detail

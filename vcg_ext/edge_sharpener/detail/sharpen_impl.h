@@ -143,7 +143,8 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   if (usesFeatureZones(opt.method)) refineExtendedPlacement(m, moves, zones, opt, report);
   std::optional<EvidenceGuard<MeshType>> evidence;
   if (input) {
-    evidence.emplace(m, moves, zones.support, opt);
+    evidence.emplace(m, moves, zones.support, InputSurface{zones.inputFaces, input->faceVertices()},
+                     opt);
     report.evidenceGuard = true;
     report.evidence = evidence->revertWeakFeatures();
   }

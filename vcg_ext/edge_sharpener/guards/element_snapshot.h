@@ -102,6 +102,9 @@ class InputFaces {
       triples_.push_back({index(f.cV(0)), index(f.cV(1)), index(f.cV(2))});
   }
 
+  /// Each input face's three vertices.
+  const std::vector<std::array<std::uint32_t, 3>> &faceVertices() const { return triples_; }
+
   /// Gives back its input face to every split face whose vertices all rest
   /// and whose children are as the split made them, when every split face
   /// sharing one of its inserted vertices can be given back too; deletes the

@@ -14,6 +14,8 @@
 #pragma once
 
 #include <vcg/complex/complex.h>
+#include <vcg/space/distance3.h>
+#include <vcg/space/triangle3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +29,7 @@
 #include "../placement.h"
 #include "../report.h"
 #include "../subdivision.h"
+#include "../util/vertex_faces.h"
 #include "element_snapshot.h"
 #include "vertex_moves.h"
 
@@ -44,6 +47,35 @@ struct Feature {
   /// lie on the planes its flanks extrapolate; a blend's, a curved face's or
   /// a scan's do not.
   double medianOffPlane = 0, maxOffPlane = 0;
+};
+
+/// How far a move lifts its vertex off the input's surface, as a fraction of
+/// the move's length: the target's distance to the nearest of `triangles`
+/// (the input faces around the vertex's sources) over |target - rest|. Near
+/// 1 where a chamfer is cut back to the edge its flanks meet at (the target
+/// lies beyond every input face); near 0 where the move slides along the
+/// input's surface (the input is already sharp there, and the move only
+/// bends a curved face). 1 for a move of no length. Pure.
+inline double moveLift(const Vec3 &target, const Vec3 &rest,
+                       const std::vector<vcg::Triangle3<double>> &triangles) {
+  const double length = (target - rest).Norm();
+  if (!(length > 0) || triangles.empty()) return 1;
+  double nearest = length;
+  for (const auto &t : triangles) {
+    double d;
+    Vec3 closest;
+    vcg::TrianglePointDistance(t, target, d, closest);
+    nearest = std::min(nearest, d);
+  }
+  return nearest / length;
+}
+
+/// The input's surface, for measuring lifts after the subdivision: each input
+/// vertex's faces (`facesOf`, built before the split) and each input face's
+/// three vertices (`faceVertices`), at the vertices' rest positions.
+struct InputSurface {
+  const VertexFaceTable &facesOf;
+  const std::vector<std::array<std::uint32_t, 3>> &faceVertices;
 };
 
 /// Groups the inserted vertices into features. `regionOf` gives each source
@@ -144,6 +176,40 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
   }
 }
 
+/// Per inserted vertex (split plan order), the lift of its move (moveLift,
+/// against the input faces around its sources); -1 where it did not move.
+template <class MeshType>
+std::vector<double> liftsOfMoves(const MeshType &m, const VertexMoves<MeshType> &moves,
+                                 const InputSurface &input) {
+  const SplitPlan &plan = moves.plan();
+  std::vector<double> lifts(plan.inserted.size(), -1.0);
+  std::vector<vcg::Triangle3<double>> around;
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+    const std::size_t v = moves.firstInserted() + k;
+    if (m.vert[v].IsD() || !moves.isMoved(v)) continue;
+    around.clear();
+    for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
+      const std::size_t s = plan.inserted[k].original[i];
+      for (const std::uint32_t *f = input.facesOf.begin(s); f != input.facesOf.end(s); ++f) {
+        const auto &t = input.faceVertices[*f];
+        around.emplace_back(moves.exactRest(t[0]), moves.exactRest(t[1]), moves.exactRest(t[2]));
+      }
+    }
+    lifts[k] = moveLift(positionOf(&m.vert[v]), plan.inserted[k].rest, around);
+  }
+  return lifts;
+}
+
+/// The median lift of the moves (liftsOfMoves; 1 when nothing moved). On a
+/// chamfered sampling the moves lift the surface to its sharp edges (near
+/// 1); on a model already sharp they slide along it (near 0).
+inline double medianLift(const std::vector<double> &lifts) {
+  std::vector<double> moved;
+  for (double l : lifts)
+    if (l >= 0) moved.push_back(l);
+  return moved.empty() ? 1.0 : detail::medianOf(moved);
+}
+
 /// Whether a feature has too little evidence to be sharpened: too short to
 /// be a feature, too many of its vertices refused by the other tests, or its
 /// samples off the planes its flanks extrapolate.
@@ -168,14 +234,22 @@ inline double refusedFraction(const std::vector<Feature> &features) {
   return vertices == 0 ? 0.0 : double(vertices - moved) / double(vertices);
 }
 
+/// Whether the mesh as a whole shows too little evidence to sharpen any of
+/// it: the tests refused too many of the moves (refusedFraction), or the
+/// moves mostly slide along the input instead of lifting it (medianLift):
+/// a model already sharp.
+inline bool meshEvidenceIsWeak(double refused, double lift, const SharpenOptions &opt) {
+  return refused > opt.maxRefusedFraction || lift < opt.minMedianLift;
+}
+
 /// Per feature, whether its moves go back: every feature when the mesh as a
-/// whole shows too little evidence (refusedFraction), else those whose
-/// evidence is weak and the corners one of whose edges' is (a corner is
-/// where its edges meet).
+/// whole shows too little evidence (meshEvidenceIsWeak with the moves'
+/// median `lift`), else those whose evidence is weak and the corners one of
+/// whose edges' is (a corner is where its edges meet).
 inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<Feature> &features,
-                                      const std::vector<std::uint32_t> &featureOf,
+                                      const std::vector<std::uint32_t> &featureOf, double lift,
                                       const SharpenOptions &opt) {
-  if (refusedFraction(features) > opt.maxRefusedFraction)
+  if (meshEvidenceIsWeak(refusedFraction(features), lift, opt))
     return std::vector<char>(features.size(), 1);
   std::vector<char> weak(features.size(), 0);
   for (std::size_t c = 0; c < features.size(); ++c)
@@ -202,8 +276,8 @@ class EvidenceGuard {
  public:
   /// \pre placement (and the extended refinement) has run.
   EvidenceGuard(MeshType &m, VertexMoves<MeshType> &moves, const SupportPlanes &support,
-                const SharpenOptions &opt)
-      : m_(m), moves_(moves), support_(support), opt_(opt) {
+                const InputSurface &input, const SharpenOptions &opt)
+      : m_(m), moves_(moves), support_(support), input_(input), opt_(opt) {
     const auto regionOf = [&](std::size_t v) -> long {
       return v < support.region.size() ? support.region[v] : -1;
     };
@@ -221,8 +295,10 @@ class EvidenceGuard {
     const SplitPlan &plan = moves_.plan();
     stats.features = features_.size();
     stats.refusedFraction = refusedFraction(features_);
-    stats.wholeMeshLeft = stats.refusedFraction > opt_.maxRefusedFraction;
-    const std::vector<char> weak = weakFeatures(plan, features_, featureOf_, opt_);
+    stats.medianLift = medianLift(liftsOfMoves(m_, moves_, input_));
+    stats.wholeMeshLeft = meshEvidenceIsWeak(stats.refusedFraction, stats.medianLift, opt_);
+    const std::vector<char> weak =
+        weakFeatures(plan, features_, featureOf_, stats.medianLift, opt_);
     for (std::size_t c = 0; c < features_.size(); ++c)
       stats.weakFeatures += weak[c] && features_[c].moved > 0;
     const std::size_t first = moves_.firstInserted();
@@ -275,6 +351,7 @@ class EvidenceGuard {
   MeshType &m_;
   VertexMoves<MeshType> &moves_;
   const SupportPlanes &support_;
+  InputSurface input_;
   const SharpenOptions &opt_;
   std::vector<Feature> features_;
   std::vector<std::uint32_t> featureOf_;
