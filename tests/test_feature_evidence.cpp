@@ -55,7 +55,7 @@ es::Feature feature(std::size_t vertices, std::size_t moved, double offPlane = 0
   es::Feature f;
   f.vertices = vertices;
   f.moved = moved;
-  f.medianOffPlane = offPlane;
+  f.maxOffPlane = offPlane;
   f.corner = corner;
   return f;
 }
@@ -100,14 +100,14 @@ TEST(FeatureEvidence, DisconnectedStripsBetweenTheSameRegionsAreSeparateFeatures
 }
 
 TEST(FeatureEvidence, WeakWhenShortRefusedOrOffItsPlanes) {
-  es::SharpenOptions opt;  // 3 vertices, 20% refused, 0.15 spacings off plane
+  es::SharpenOptions opt;  // 3 vertices, 20% refused, 0.6 spacings off plane
   EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 10), opt));
   EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 8), opt));  // 20%: not more
   EXPECT_TRUE(es::featureEvidenceIsWeak(feature(10, 7), opt));
   EXPECT_TRUE(es::featureEvidenceIsWeak(feature(2, 2), opt));
   EXPECT_FALSE(es::featureEvidenceIsWeak(feature(1, 1, 0, /*corner=*/true), opt));
-  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 10, 0.15), opt));
-  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(10, 10, 0.2), opt));
+  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 10, 0.6), opt));
+  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(10, 10, 0.7), opt));
 }
 
 TEST(FeatureEvidence, RefusedFractionCountsOnlyFeaturesThatMoved) {
@@ -128,7 +128,7 @@ TEST(FeatureEvidence, AWeakEdgeTakesItsCornerButNotTheOtherEdge) {
   auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, opt);
   EXPECT_FALSE(weak[a] || weak[b] || weak[corner]);
 
-  features[a] = feature(4, 4, /*offPlane=*/0.5);  // strip A lies off its planes
+  features[a] = feature(4, 4, /*offPlane=*/1.0);  // a sample of strip A lies off its plane
   weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, opt);
   EXPECT_TRUE(weak[a]);
   EXPECT_TRUE(weak[corner]);

@@ -103,12 +103,12 @@ int main(int argc, char **argv) {
           "{\"case\": \"%s\", \"refused\": %.4f, \"mesh_lift\": %.4f, \"feature\": %zu, "
           "\"corner\": %d, "
           "\"vertices\": %zu, \"moved\": %zu, "
-          "\"median_off_plane\": %.4f, \"max_off_plane\": %.4f, \"median_displacement\": %.4f, "
+          "\"max_off_plane\": %.4f, \"median_displacement\": %.4f, "
           "\"median_lift\": %.4f, \"weak\": %d, \"harm_sum\": %.5f, \"harm_max\": %.5f, "
           "\"before_sum\": %.5f}\n",
           name.c_str(), refused, es::medianLift(lifts), c, int(f.corner), f.vertices, f.moved,
-          f.medianOffPlane, f.maxOffPlane, es::detail::medianOf(moveLengths[c]),
-          es::medianLift(featureLifts[c]), int(weak[c]), sum[c], worst[c], before[c]);
+          f.maxOffPlane, es::detail::medianOf(moveLengths[c]), es::medianLift(featureLifts[c]),
+          int(weak[c]), sum[c], worst[c], before[c]);
     }
   } catch (const std::exception &e) {
     std::cerr << "evidence-study: " << e.what() << "\n";

@@ -275,8 +275,8 @@ inline const std::vector<OptionSpec> &optionTable() {
        T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_REAL(maxFeatureFallbackFraction)},
       {"max_feature_off_plane_spacings", "--feature-off-plane", "", "Feature off-plane distance",
-       "Auto method: a feature stays as it was when its vertices lie farther than this from the "
-       "planes fitted to its flanks (median over the feature): a blend or a curved face.",
+       "Auto method: a feature stays as it was when one of its vertices lies farther than this "
+       "from the plane fitted to its flank: a blend, a curved face or a thin wall meets it.",
        T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
        ES_REAL(maxFeatureOffPlaneSpacings)},
       {"min_feature_vertices", "--min-feature-vertices", "", "Minimum feature size",

@@ -160,9 +160,9 @@ struct SharpenOptions {
   /// A feature goes back to rest whole when more than this fraction of its
   /// inserted vertices were refused by the other tests...
   double maxFeatureFallbackFraction = 0.2;
-  /// ...or when its source vertices lie off their planes by more than this
-  /// many sample spacings (the median over the feature)...
-  double maxFeatureOffPlaneSpacings = 0.15;
+  /// ...or when one of its source vertices lies off its plane by more than
+  /// this many sample spacings...
+  double maxFeatureOffPlaneSpacings = 0.6;
   /// ...or when it has fewer than this many inserted vertices.
   int minFeatureVertices = 3;
   /// Nothing is sharpened either when the moves mostly slide along the

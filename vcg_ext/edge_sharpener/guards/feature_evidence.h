@@ -42,11 +42,11 @@ struct Feature {
   bool corner = false;
   std::size_t vertices = 0;  ///< inserted vertices still in the mesh
   std::size_t moved = 0;     ///< of those, placed on their planes
-  /// How far the source vertices lie from their own planes, in sample
-  /// spacings: the median and the largest. A remeshed sharp edge's samples
-  /// lie on the planes its flanks extrapolate; a blend's, a curved face's or
-  /// a scan's do not.
-  double medianOffPlane = 0, maxOffPlane = 0;
+  /// How far its farthest source vertex lies from its own plane, in sample
+  /// spacings. A remeshed sharp edge's samples lie on the planes its flanks
+  /// extrapolate, up to the sampler's rounding along the edge; where a
+  /// blend, a curved face or a thin wall meets the edge, some lie far off.
+  double maxOffPlane = 0;
 };
 
 /// How far a move lifts its vertex off the input's surface, as a fraction of
@@ -147,9 +147,8 @@ void countFeatureMoves(const MeshType &m, const VertexMoves<MeshType> &moves,
   }
 }
 
-/// The counts (countFeatureMoves) and how far each feature's source vertices
-/// lie from their planes, at their rest positions (Feature::medianOffPlane,
-/// Feature::maxOffPlane).
+/// The counts (countFeatureMoves) and how far each feature's farthest source
+/// vertex lies from its plane, at its rest position (Feature::maxOffPlane).
 template <class MeshType>
 void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
                      const SupportPlanes &support, const std::vector<std::uint32_t> &featureOf,
@@ -157,22 +156,17 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
   countFeatureMoves(m, moves, featureOf, features);
   const SplitPlan &plan = moves.plan();
   const double spacing = support.sampleSpacing > 0 ? support.sampleSpacing : 1.0;
-  std::vector<std::vector<double>> offPlane(features.size());
+  for (Feature &f : features) f.maxOffPlane = 0;
   for (std::size_t k = 0; k < featureOf.size(); ++k) {
     if (m.vert[moves.firstInserted() + k].IsD()) continue;
+    double &farthest = features[featureOf[k]].maxOffPlane;
     for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
       const std::size_t s = plan.inserted[k].original[i];
       const Plane &pl = support.plane(s);
       if (pl.normal.SquaredNorm() == 0) continue;
-      offPlane[featureOf[k]].push_back(std::abs(pl.normal * (moves.exactRest(s) - pl.point)) /
-                                       spacing);
+      farthest =
+          std::max(farthest, std::abs(pl.normal * (moves.exactRest(s) - pl.point)) / spacing);
     }
-  }
-  for (std::size_t c = 0; c < features.size(); ++c) {
-    Feature &f = features[c];
-    f.maxOffPlane = 0;
-    for (double d : offPlane[c]) f.maxOffPlane = std::max(f.maxOffPlane, d);
-    f.medianOffPlane = detail::medianOf(offPlane[c]);
   }
 }
 
@@ -211,11 +205,11 @@ inline double medianLift(const std::vector<double> &lifts) {
 }
 
 /// Whether a feature has too little evidence to be sharpened: too short to
-/// be a feature, too many of its vertices refused by the other tests, or its
-/// samples off the planes its flanks extrapolate.
+/// be a feature, too many of its vertices refused by the other tests, or one
+/// of its samples far off the plane its flank extrapolates.
 inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
   if (!f.corner && f.vertices < std::size_t(opt.minFeatureVertices)) return true;
-  if (f.medianOffPlane > opt.maxFeatureOffPlaneSpacings) return true;
+  if (f.maxOffPlane > opt.maxFeatureOffPlaneSpacings) return true;
   return double(f.vertices - f.moved) > opt.maxFeatureFallbackFraction * double(f.vertices);
 }
 
