@@ -91,16 +91,6 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"projected_vertices", r.extended.projectedVertices},
                      {"projections_rejected", r.extended.projectionsRejected},
                      {"max_projection", r.extended.maxProjection}};
-  if (r.extendedMethod && r.geometryChanged)
-    j["sampling_grid"] = {{"found", r.grid.gridFound},
-                          {"step", r.grid.step},
-                          {"nodes_tested", r.grid.nodesTested},
-                          {"sweeping_faces", r.grid.sweepingFaces},
-                          {"reverted", r.grid.reverted},
-                          {"zone_reverted", r.grid.zoneReverted},
-                          {"rounds", r.grid.rounds},
-                          {"blended_features", r.grid.blendedFeatures},
-                          {"feature_reverted", r.grid.featureReverted}};
   if (r.evidenceGuard)
     j["evidence"] = {{"features", r.evidence.features},
                      {"weak_features", r.evidence.weakFeatures},

@@ -19,8 +19,6 @@ VARIANTS = ("paper", "auto", "extended", "extended-strict")
 LABELS = {"paper": "paper", "auto": "auto (default)", "extended": "extended",
           "extended-strict": "strict"}
 STRICT = "extended-strict"
-# The opt-in sampling-grid guard, each against the variant it is added to.
-GRID_PAIRS = (("extended", "extended-grid"), ("extended-strict", "extended-strict-grid"))
 
 
 def gmean(values):
@@ -161,19 +159,6 @@ def write(results, tools, cache, docs):
             f"came out more than {WORSE_TOLERANCE:.0%} above the input's.",
             summary_table(cases, m))
 
-    # ---- sampling-grid guard
-    section("The opt-in sampling-grid guard (`--grid-guard`)",
-            "On inputs whose vertices all lie on the edges of one axis-aligned grid (marching "
-            "cubes; detected from the coordinates), a moved vertex goes back to rest when its "
-            "faces sweep over a grid node the input's sampling put on the other side of the "
-            "surface, and when a tenth of the moves between two regions went back so, the rest "
-            "of that feature follows (`vcg_ext/edge_sharpener/sampling_grid.h`). Each variant "
-            "with the guard against the same variant without it, default multiplier: geometric "
-            "means of the reduction factors over the inputs with sharp features, and how many "
-            "inputs the guard changed (better / worse: max or RMS more than "
-            f"{WORSE_TOLERANCE:.0%} lower / higher than without it).",
-            grid_guard_table(cases, m), grid_guard_changes(cases, m))
-
     # ---- worse cases
     section("Where sharpening made it worse",
             worse_section(cases, results), worse_causes(cases, results))
@@ -294,61 +279,6 @@ def summary_row(label, cs, m):
     return "| " + " | ".join(cells) + " |"
 
 
-def grid_guard_table(cases, m):
-    rows = ["| input | n | " + " | ".join(
-                f"{base}: max / RMS | {guarded}: max / RMS | better / worse"
-                for base, guarded in GRID_PAIRS) + " |",
-            "|---|---|" + "---|---|---|" * len(GRID_PAIRS)]
-    groups = {}
-    for c in sharp_cases(cases):
-        groups.setdefault((c["input_title"], c["resolution"], c["order"]), []).append(c)
-    ordered = sorted(groups.items(), key=lambda kv: kv[0][2])
-    allc = [c for _, cs in ordered for c in cs]
-    for label, cs in [(f"{t} {r}", cs) for (t, r, _), cs in ordered] + [("**all**", allc)]:
-        cells = [label, str(len(cs))]
-        for base, guarded in GRID_PAIRS:
-            pairs = [(c, run_of(c, base, m), run_of(c, guarded, m)) for c in cs]
-            pairs = [p for p in pairs if p[1] and p[2]]
-            for method_index in (1, 2):
-                max_f = gmean([factor(p[0]["before"]["max"], p[method_index]["after"]["max"])
-                               for p in pairs])
-                rms_f = gmean([factor(p[0]["before"]["rms"], p[method_index]["after"]["rms"])
-                               for p in pairs])
-                cells.append(f"{fx(max_f)} / {fx(rms_f)}")
-            better = sum(1 for _, a, b in pairs if changed(a, b) < 0)
-            worse = sum(1 for _, a, b in pairs if changed(a, b) > 0)
-            cells.append(f"{better} / {worse}")
-        rows.append("| " + " | ".join(cells) + " |")
-    return "\n".join(rows)
-
-
-def changed(without, with_guard):
-    """+1 when the guard made max or RMS worse by more than the tolerance, -1 when it
-    made one better and neither worse, 0 otherwise."""
-    a, b = without["after"], with_guard["after"]
-    if b["max"] > a["max"] * (1 + WORSE_TOLERANCE) or b["rms"] > a["rms"] * (1 + WORSE_TOLERANCE):
-        return 1
-    if b["max"] < a["max"] * (1 - WORSE_TOLERANCE) or b["rms"] < a["rms"] * (1 - WORSE_TOLERANCE):
-        return -1
-    return 0
-
-
-def grid_guard_changes(cases, m):
-    rows = ["Every input the guard changed by more than the tolerance (% of the diagonal):", "",
-            "| model | input | variant | max without -> with | RMS without -> with | input max / RMS |",
-            "|---|---|---|---|---|---|"]
-    for c in sharp_cases(cases):
-        for base, guarded in GRID_PAIRS:
-            a, b = run_of(c, base, m), run_of(c, guarded, m)
-            if not a or not b or changed(a, b) == 0:
-                continue
-            rows.append(f"| {c['model']} | {c['input_title']} {c['resolution']} | {guarded} | "
-                        f"{fmt(a['after']['max'])} -> {fmt(b['after']['max'])} | "
-                        f"{fmt(a['after']['rms'])} -> {fmt(b['after']['rms'])} | "
-                        f"{fmt(c['before']['max'])} / {fmt(c['before']['rms'])} |")
-    return "\n".join(rows)
-
-
 # Why a model comes out worse, as diagnosed by hand (the inserted vertices and fitted
 # planes at the worst points, against the reference's own faces). Printed for the
 # models that appear in the worse table.
@@ -366,15 +296,7 @@ WORSE_CAUSES = {
         "facets): the strict plane guard keeps the wall strip's tilted plane from acting where "
         "its sources lie off it (0.5% is no longer worse with it), but at 1% the fillet's "
         "samples lie on the two planes' extensions within 0.3 spacings and it squares the "
-        "fillet off (max 0.386 -> 0.823): the paper's small-radius-blend limit. The opt-in "
-        "sampling-grid guard finds grid nodes that the resampling saw outside a fillet (0.65 "
-        "cells from it) swept inside by the squared-off edge and sends those moves back, and "
-        "with them the rest of each fillet whose moves a tenth went back (1%, strict: max "
-        "0.823 -> 0.482; 0.5%, extended: RMS 0.057 -> 0.018). What is left at 1% (strict, "
-        "grid: max 0.482) is the top edge at the plate's rounded corners in plan view (walls "
-        "in 15-degree facets 1.8 cells wide): the wall's plane, fitted over two rings of "
-        "faces, comes from the facet before, and the sharp top edge lands 1.8 units (half a "
-        "cell) outside the outline."),
+        "fillet off (max 0.386 -> 0.823): the paper's small-radius-blend limit."),
     "fandisk": (
         "with CSG 1% (extended), the worst point (0.013, -0.928, -0.349) is where a face 0.05 "
         "wide (1.7 cells) at x = 0 meets the front face: the plane fitted to the narrow face and "
@@ -406,9 +328,7 @@ WORSE_CAUSES = {
         "normal (-0.5, -0.866, 0)); the sharpener restores the edge the designer bevelled. A "
         "chamfer a few samples wide cannot be told from a sampling chamfer without other "
         "information (paper, section 5). At 0.5% the worst points are inserted vertices on the "
-        "top plane 2.6e-5 units (0.7 cells) beyond the bevel's upper edge; the opt-in "
-        "sampling-grid guard sends back only 3 moves there: so thin a swept volume holds no "
-        "grid node to witness against it."),
+        "top plane 2.6e-5 units (0.7 cells) beyond the bevel's upper edge."),
 }
 
 

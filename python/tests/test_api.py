@@ -88,9 +88,10 @@ def test_options_come_from_the_table():
         assert option["key"] in es.sharpen.__doc__ and option["key"] in es.detect.__doc__
     # Every option can be given; the values come back in the report.
     _, _, report = es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F, method="extended", multiplier=1.5,
-                              support_rings=3, degenerate_angle_deg=2, sampling_grid_guard=True)
+                              support_rings=3, degenerate_angle_deg=2, open_region_contacts=False)
     assert report["options"]["multiplier"] == 1.5 and report["options"]["support_rings"] == 3
     assert report["options"]["degenerate_angle_deg"] == 2 and report["options"]["method"] == "extended"
+    assert report["options"]["open_region_contacts"] is False
 
 
 def test_a_preset_comes_before_the_settings_it_presets():

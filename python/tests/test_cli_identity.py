@@ -15,7 +15,7 @@ OPTION_SETS = [
     {},
     {"method": "extended"},
     {"method": "extended", "strict": True},
-    {"method": "extended", "sampling_grid_guard": True, "multiplier": 1.5},
+    {"method": "extended", "open_region_contacts": False, "multiplier": 1.5},
     {"multiplier": 3.0, "edge_length_check": False, "degenerate_angle_deg": 2.0},
 ]
 # Fields of the CLI's JSON that describe the run, not the result.

@@ -29,8 +29,7 @@ Float|Smooth-edge multiplier
 Bool|Edge-length check
 Bool|Colorize
 Float|Degenerate angle (deg)
-Bool|Strict plane guard (extended)
-Bool|Sampling-grid guard (extended)"
+Bool|Strict plane guard (extended)"
 check_filter "Edge-Sharpener: Detect Chamfers" "Enum|Method
 Float|Smooth-edge multiplier
 Bool|Strict plane guard (extended)"

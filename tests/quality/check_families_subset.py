@@ -27,23 +27,18 @@ MULTIPLIER = 2.0
 MEASURED = {
     ("vdb", "1%"): {"auto": (1.060, 1.332, 0), "paper": (1.000, 1.030, 0),
         "extended": (1.647, 3.019, 0), "extended-strict": (1.071, 1.648, 0),
-        "extended-grid": (1.647, 3.019, 0), "extended-strict-grid": (1.071, 1.648, 0),
         "unsharp-mask": (1.177, 1.397, 0)},
     ("ier", "1%"): {"auto": (3.233, 30.713, 0), "paper": (1.702, 7.853, 0),
         "extended": (3.233, 30.852, 0), "extended-strict": (3.233, 30.848, 0),
-        "extended-grid": (3.233, 30.852, 0), "extended-strict-grid": (3.233, 30.848, 0),
         "unsharp-mask": (1.240, 1.332, 0)},
     ("poisson", "depth 7"): {"auto": (1.029, 1.066, 0), "paper": (1.014, 1.064, 0),
         "extended": (1.196, 1.380, 0), "extended-strict": (1.137, 1.339, 0),
-        "extended-grid": (1.074, 1.199, 0), "extended-strict-grid": (1.041, 1.186, 0),
         "unsharp-mask": (1.117, 1.171, 0)},
     ("scan", "noise 0"): {"auto": (1.000, 1.000, 0), "paper": (1.000, 0.992, 2),
         "extended": (0.881, 0.946, 3), "extended-strict": (1.000, 0.960, 3),
-        "extended-grid": (0.881, 0.949, 3), "extended-strict-grid": (1.000, 0.960, 3),
         "unsharp-mask": (0.890, 0.880, 3)},
     ("scan", "noise 0.2 voxel"): {"auto": (1.000, 1.000, 0), "paper": (1.002, 0.989, 2),
         "extended": (0.965, 0.958, 3), "extended-strict": (1.003, 0.966, 3),
-        "extended-grid": (0.966, 0.963, 3), "extended-strict-grid": (1.003, 0.967, 2),
         "unsharp-mask": (0.891, 0.879, 3)},
 }
 SHAPES = 3

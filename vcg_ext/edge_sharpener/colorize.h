@@ -42,7 +42,6 @@ inline vcg::Color4b placementColor(Placement p, VertexLabel label) {
     case Placement::CurvedSupport: return vcg::Color4b(0, 120, 120, 255);
     case Placement::IntersectionRevert: return vcg::Color4b(255, 150, 200, 255);
     case Placement::OffPlaneSource: return vcg::Color4b(128, 128, 0, 255);
-    case Placement::GridRevert: return vcg::Color4b(0, 128, 128, 255);
     case Placement::WeakEvidence: return vcg::Color4b(128, 128, 0, 255);
   }
   return vcg::Color4b(160, 160, 160, 255);

@@ -21,14 +21,7 @@ enum class OptionType { Flag, Integer, Real, Choice };
 
 /// Who sets the option. `Ordinary` options are what users see first (CLI
 /// help, MeshLab dialog, Blender panel); the others are one method's tuning.
-enum class OptionGroup {
-  Ordinary,
-  PaperTuning,
-  ExtendedTuning,
-  EvidenceGuard,
-  StrictGuard,
-  GridGuard
-};
+enum class OptionGroup { Ordinary, PaperTuning, ExtendedTuning, EvidenceGuard, StrictGuard };
 
 inline const char *toString(OptionGroup g) {
   switch (g) {
@@ -37,7 +30,6 @@ inline const char *toString(OptionGroup g) {
     case OptionGroup::ExtendedTuning: return "Extended method tuning";
     case OptionGroup::EvidenceGuard: return "Auto method: evidence guard";
     case OptionGroup::StrictGuard: return "Extended method: strict plane guard";
-    case OptionGroup::GridGuard: return "Extended method: sampling-grid guard";
   }
   return "";
 }
@@ -302,25 +294,6 @@ inline const std::vector<OptionSpec> &optionTable() {
        "by at most this angle (0: off; strict: 4).",
        T::Real, G::StrictGuard, "deg", 0, 90, false, kNotInMeshLab, {}, {},
        ES_ANGLE(fitSeedFlatAngleRad)},
-      // ----- extended method, sampling-grid guard
-      {"sampling_grid_guard", "--grid-guard", "samplingGridGuard", "Sampling-grid guard (extended)",
-       "Extended method only. When the input was made by marching cubes (its vertices lie on "
-       "the edges of an axis-aligned grid, which is detected), a new vertex goes back to rest "
-       "when sharpening would sweep the surface over a grid node that the sampler saw on the "
-       "other side (a blend or a bevel hardly larger than a cell); when a tenth of the moves "
-       "between two regions go back so, the rest of them follow. For resamplings of exact "
-       "shapes (Uniform Mesh Resampling); not for reconstructions (Screened Poisson), whose "
-       "grid holds a smoothed surface.",
-       T::Flag, G::GridGuard, "", 0, 1, false, kInSharpen, {}, {}, ES_FLAG(samplingGridGuard)},
-      {"grid_sweep_tolerance_cells", "--grid-tolerance", "", "Grid tolerance",
-       "A node counts as swept when it lies this many cells past the moved face.",
-       T::Real, G::GridGuard, "cells", 0, 10, false, kNotInMeshLab, {}, {},
-       ES_REAL(gridSweepToleranceCells)},
-      {"grid_blended_feature_fraction", "--grid-blended-fraction", "", "Grid blended fraction",
-       "When this fraction of the moves between two regions went back, the rest of them go "
-       "back too (a blend, not a sharp edge; 0: off).",
-       T::Real, G::GridGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
-       ES_REAL(gridBlendedFeatureFraction)},
   };
   return table;
 }

@@ -132,25 +132,6 @@ struct SharpenOptions {
   /// faces of the chamfer. 0: no refit.
   double fitTrimAngleRad = 15.0 * M_PI / 180.0;
 
-  /// Send a moved vertex back to rest when one of its faces sweeps over a
-  /// node of the input's sampling grid, when the input has one (marching
-  /// cubes: sampling_grid.h): the sampler saw that node on the other side of
-  /// the surface, so the sharp edge is not there (a blend or a bevel hardly
-  /// larger than a cell). Off by default: it assumes the grid holds the
-  /// signs of the true solid (a resampling such as MeshLab's Uniform Mesh
-  /// Resampling), while a reconstruction's grid (Screened Poisson) holds
-  /// those of a smoothed function, where it keeps real features rounded.
-  bool samplingGridGuard = false;
-  /// ...by more than this many cells past the moved face (plane fits of a
-  /// truly sharp edge graze nodes by a few thousandths of a cell).
-  double gridSweepToleranceCells = 0.03;
-  /// ...and when at least this fraction of the moves between two regions
-  /// went back so, the rest of them go back too (a feature is blended or
-  /// sharp along its length; the nodes witness only where they happen to
-  /// fall). 0 disables. On the exact sharp shapes nothing goes back, so any
-  /// small fraction separates; 0.1 leaves room for a stray witness.
-  double gridBlendedFeatureFraction = 0.1;
-
   // --- Auto method: the evidence guard (feature_evidence.h) ---
 
   /// Nothing is sharpened when the tests refused more than this fraction of

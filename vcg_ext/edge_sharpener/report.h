@@ -78,20 +78,6 @@ struct IntersectionStats {
   std::size_t remaining = 0;          ///< intersecting pairs left alone: they intersect at rest too
 };
 
-/// Stage 5b, extended method: moved vertices sent back to rest because their
-/// faces swept over a node of the input's sampling grid (sampling_grid.h).
-struct GridGuardStats {
-  bool gridFound = false;           ///< the input lies on an axis-aligned sampling grid
-  double step = 0;                  ///< its smallest cell size
-  std::size_t nodesTested = 0;      ///< sampled grid nodes in the swept volumes, first round
-  std::size_t sweepingFaces = 0;    ///< moved faces that swept over such a node, first round
-  std::size_t reverted = 0;         ///< inserted vertices sent back to rest
-  std::size_t zoneReverted = 0;     ///< projected zone vertices sent back to rest
-  std::size_t rounds = 0;           ///< rounds that found a swept node
-  std::size_t blendedFeatures = 0;  ///< region pairs whose moves went back as a whole
-  std::size_t featureReverted = 0;  ///< of `reverted`, those sent back with their feature
-};
-
 /// Stage 6c, auto method: features sent back whole for weak evidence
 /// (feature_evidence.h).
 struct EvidenceStats {
@@ -129,7 +115,6 @@ struct SharpenReport {
   PlacementStats placement;
   CleanupStats cleanup;
   IntersectionStats intersections;
-  GridGuardStats grid;         ///< extended method with SharpenOptions::samplingGridGuard
   bool evidenceGuard = false;  ///< the auto method's evidence guard ran
   EvidenceStats evidence;
   bool extendedMethod = false;
@@ -182,19 +167,6 @@ inline void formatPlacement(std::ostream &s, const SharpenReport &r) {
   s << "\n";
 }
 
-inline void formatGridGuard(std::ostream &s, const GridGuardStats &g) {
-  s << "sampling grid: ";
-  if (!g.gridFound) {
-    s << "none found (guard off)\n";
-    return;
-  }
-  s << "axis-aligned, cell " << g.step << "; " << g.sweepingFaces
-    << " moved faces swept over a sampled node, " << g.reverted << " inserted and "
-    << g.zoneReverted << " zone vertices sent back (" << g.rounds << " rounds); "
-    << g.blendedFeatures << " blended features (" << g.featureReverted
-    << " of those inserted vertices sent back with their feature)\n";
-}
-
 inline void formatGuards(std::ostream &s, const SharpenReport &r) {
   s << "cleanup: " << r.cleanup.degenerateFound << " degenerate faces found, "
     << r.cleanup.collapses << " collapses, " << r.cleanup.flips << " flips, " << r.cleanup.reverted
@@ -226,7 +198,6 @@ inline std::string formatReport(const SharpenReport &r) {
   if (r.extendedMethod) detail::formatFeatureZones(s, r);
   if (!r.geometryChanged) return s.str();
   detail::formatPlacement(s, r);
-  if (r.extendedMethod) detail::formatGridGuard(s, r.grid);
   detail::formatGuards(s, r);
   s << "output: " << r.outputVertices << " vertices, " << r.outputFaces << " faces\n";
   return s.str();
