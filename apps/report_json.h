@@ -84,7 +84,6 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"corridors", r.extended.corridors},
                      {"opened_contacts", r.extended.openedContacts},
                      {"opened_creases", r.extended.openedCreases},
-                     {"returned_border_faces", r.extended.returnedBorderFaces},
                      {"zone_faces", r.extended.zoneFaces},
                      {"zone_vertices", r.extended.zoneVertices},
                      {"labelled_zone_vertices", r.extended.labelledZoneVertices},

@@ -13,12 +13,9 @@ import families
 PAPER_CLAIM = ("fandisk remeshed by SwingWrapper: max error 0.89% -> 0.43% of the diagonal "
                "(x2.07); L2 error about a fifth (x5) for dense remeshings (Figure 10)")
 WORSE_TOLERANCE = 0.01  # "worse" = more than 1% above the input (sampling noise is below 0.3%)
-# The runs' variants (run.py VARIANTS): the two methods, and the extended method with the
-# opt-in strict plane guard (default multiplier only).
-VARIANTS = ("paper", "auto", "extended", "extended-strict")
-LABELS = {"paper": "paper", "auto": "auto (default)", "extended": "extended",
-          "extended-strict": "strict"}
-STRICT = "extended-strict"
+# The runs' variants (run.py VARIANTS): the three methods.
+VARIANTS = ("paper", "auto", "extended")
+LABELS = {"paper": "paper", "auto": "auto (default)", "extended": "extended"}
 
 
 def gmean(values):
@@ -116,11 +113,7 @@ def write(results, tools, cache, docs):
       f"`edge-sharpener --method`, default parameters (multiplier {m:g}, length check on); "
       "*auto* is the extended method with the evidence guard (a feature is kept only when "
       "placement's tests agree along it and its samples lie on its planes; nothing is kept "
-      "when most moves are refused: `vcg_ext/edge_sharpener/guards/feature_evidence.h`); "
-      "*strict* (*extended-strict*) is the extended method with the opt-in strict plane guard "
-      "(`--method extended --strict`: border faces turned from their region's plane return to "
-      "the zone, and a vertex whose source lies more than 0.3 median edge lengths off its plane "
-      "stays at rest). "
+      "when most moves are refused: `vcg_ext/edge_sharpener/guards/feature_evidence.h`). "
       "Inputs are made by Debian's real `meshlabserver` 2020.09 from the reference: "
       "Uniform Mesh Resampling (marching cubes; cell = % of the diagonal, Clean Vertices off), "
       "Isotropic Explicit Remeshing (target length = % of the diagonal, crease angle 181° = no "
@@ -293,21 +286,18 @@ WORSE_CAUSES = {
         "moves 25 vertices there (at most 1.04 units, 55 kept by the convexity test) and the "
         "farthest rim point of the reference moves from 0.917% to 0.937% away. The bottom edges "
         "of the plate are rounded (fillets of radius 6.35, 1.7 cells at 1%, in 15-degree "
-        "facets): the strict plane guard keeps the wall strip's tilted plane from acting where "
-        "its sources lie off it (0.5% is no longer worse with it), but at 1% the fillet's "
-        "samples lie on the two planes' extensions within 0.3 spacings and it squares the "
-        "fillet off (max 0.386 -> 0.823): the paper's small-radius-blend limit."),
+        "facets): their samples lie close to the two planes' extensions, and sharpening squares "
+        "the fillets off: the paper's small-radius-blend limit."),
     "fandisk": (
         "with CSG 1% (extended), the worst point (0.013, -0.928, -0.349) is where a face 0.05 "
         "wide (1.7 cells) at x = 0 meets the front face: the plane fitted to the narrow face and "
         "the front face's plane meet 0.96% of the diagonal from the reference's edge. Same limit "
-        "as plate_holes; the strict plane guard keeps it at rest (max 0.471). With IER 1% at "
-        "multiplier 1.5 the worst points (0.411, -0.998, 0.337) are a corner of the vertical "
+        "as plate_holes. With IER 1% at multiplier 1.5 the worst points (0.411, -0.998, 0.337) "
+        "are a corner of the vertical "
         "blend between the front and the side face (a cylinder of radius 0.1, 3.4 samples, in "
         "22-degree facets): at the lower threshold every facet is zone, and the front, side and "
         "back planes meet at the corner of the blend's bounding box, 1.25% of the diagonal "
-        "outside it (the paper's small-radius-blend limit); the strict plane guard keeps it "
-        "(max 0.558 at multiplier 1.5)."),
+        "outside it (the paper's small-radius-blend limit)."),
     "octa-flower17k": (
         "with Screened Poisson (depth 7, cells of about 0.3 units), the worst points are inserted "
         "vertices at the petals' tips (x = 17.7): the reconstruction rounds each acute tip back "
@@ -506,7 +496,7 @@ def plot_resolution(cases, model, m, path):
             xs = [c["before"]["faces"] for c in cs]
             ax.plot(xs, [c["before"][key] for c in cs], "o-", color=color, alpha=0.45,
                     label=f"{label}: input")
-            for method, style in (("paper", "s--"), ("extended", "^-"), (STRICT, "v:")):
+            for method, style in (("paper", "s--"), ("extended", "^-"), ("auto", "v:")):
                 pts = [(c["before"]["faces"], run_of(c, method, m)) for c in cs]
                 pts = [(x, r["after"][key]) for x, r in pts if r]
                 if pts:

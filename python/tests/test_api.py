@@ -94,16 +94,6 @@ def test_options_come_from_the_table():
     assert report["options"]["open_region_contacts"] is False
 
 
-def test_a_preset_comes_before_the_settings_it_presets():
-    # strict sets max_source_off_plane_spacings to 0.3; a value given with it wins,
-    # whatever the keyword order.
-    for kwargs in ({"strict": True, "max_source_off_plane_spacings": 0.7},
-                   {"max_source_off_plane_spacings": 0.7, "strict": True}):
-        _, _, report = es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F, method="extended", **kwargs)
-        assert report["options"]["max_source_off_plane_spacings"] == 0.7
-        assert report["options"]["fit_seed_flat_angle_deg"] == 4
-
-
 def test_colorize_returns_colors(cube):
     vertices, faces, report = es.sharpen(*cube, colorize=True)
     assert report["colors"]["faces"].shape == (len(faces), 4)

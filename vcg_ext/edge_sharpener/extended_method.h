@@ -12,7 +12,7 @@
 namespace edge_sharpener {
 
 /// Detection by feature zones: smooth regions segmented; faces returned to
-/// the zone where regions touch, crease or (strict) turn from their plane;
+/// the zone where regions touch or crease;
 /// zone vertices labelled with the surface they sample; chamfer edges
 /// marked between differently labelled vertices. Fills `zones` (support
 /// planes included) and report.extended / report.filters.
@@ -36,14 +36,8 @@ void detectFeatureZones(MeshType &m, MeshLabels<MeshType> &labels, const Sharpen
     stats.openedCreases = openInternalCreases(m, labels, vf, creaseAngle, zones);
     stats.zoneFaces += stats.openedCreases;
   }
-  if (opt.borderTurnThresholdFactor > 0) {
-    stats.returnedBorderFaces = returnTurnedBorderFaces(
-        m, labels, vf, opt, opt.borderTurnThresholdFactor * report.smooth.thresholdRad, zones);
-    stats.zoneFaces += stats.returnedBorderFaces;
-  }
   labelZoneVertices(m, vf, opt, zones, stats);
   zones.support.sampleSpacing = medianEdgeLength(m);
-  if (opt.maxSourceOffPlaneSpacings > 0) measureOffPlane(m, zones);
   report.filters = markZoneChamfers(m, labels, zones, opt.sameRegionFeatureAngleRad);
 }
 
