@@ -33,8 +33,7 @@ struct CliOptions {
   std::vector<std::string> choice = std::vector<std::string>(es::optionTable().size());
   std::vector<CLI::Option *> given = std::vector<CLI::Option *>(es::optionTable().size());
 
-  /// The core's options: its defaults, then every option given, in table order
-  /// (so a preset such as --strict comes before the settings it presets).
+  /// The core's options: its defaults, then every option given, in table order.
   es::SharpenOptions sharpenOptions() const {
     es::SharpenOptions opt;
     const auto &table = es::optionTable();

@@ -84,23 +84,12 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"corridors", r.extended.corridors},
                      {"opened_contacts", r.extended.openedContacts},
                      {"opened_creases", r.extended.openedCreases},
-                     {"returned_border_faces", r.extended.returnedBorderFaces},
                      {"zone_faces", r.extended.zoneFaces},
                      {"zone_vertices", r.extended.zoneVertices},
                      {"labelled_zone_vertices", r.extended.labelledZoneVertices},
                      {"projected_vertices", r.extended.projectedVertices},
                      {"projections_rejected", r.extended.projectionsRejected},
                      {"max_projection", r.extended.maxProjection}};
-  if (r.extendedMethod && r.geometryChanged)
-    j["sampling_grid"] = {{"found", r.grid.gridFound},
-                          {"step", r.grid.step},
-                          {"nodes_tested", r.grid.nodesTested},
-                          {"sweeping_faces", r.grid.sweepingFaces},
-                          {"reverted", r.grid.reverted},
-                          {"zone_reverted", r.grid.zoneReverted},
-                          {"rounds", r.grid.rounds},
-                          {"blended_features", r.grid.blendedFeatures},
-                          {"feature_reverted", r.grid.featureReverted}};
   if (r.evidenceGuard)
     j["evidence"] = {{"features", r.evidence.features},
                      {"weak_features", r.evidence.weakFeatures},

@@ -127,20 +127,20 @@ int main(int argc, char **argv) {
        << cell(get("fast_ff")) << " | " << cell(get("vcg_ff")) << " |\n";
   }
 
-  md << "\n## Extended method\n\n"
-        "`sharpen()` with `--method extended` and with its strict plane guard (`--strict`), all "
+  md << "\n## Extended and auto methods\n\n"
+        "`sharpen()` with `--method extended` and with `--method auto` (the default), all "
         "threads, against the same floor (issue 7: runtime within issue 5's targets):\n\n"
-        "| faces | floor (ms) | extended (ms) | extended/floor | strict (ms) | strict/floor |\n"
+        "| faces | floor (ms) | extended (ms) | extended/floor | auto (ms) | auto/floor |\n"
         "|---:|---:|---:|---:|---:|---:|\n";
   const auto familyMs = [&](const std::string &fam, long faces) {
     return r.median.count(fam) && r.median.at(fam).count(faces) ? ms(r.median.at(fam).at(faces))
                                                                 : -1.0;
   };
   for (const auto &[faces, fb] : floor) {
-    const double f = ms(fb), e = familyMs("extended", faces), st = familyMs("strict", faces);
+    const double f = ms(fb), e = familyMs("extended", faces), a = familyMs("auto", faces);
     md << "| " << faces << " | " << cell(f) << " | " << cell(e) << " | "
-       << cell(e > 0 ? e / f : -1, "%.2f") << " | " << cell(st) << " | "
-       << cell(st > 0 ? st / f : -1, "%.2f") << " |\n";
+       << cell(e > 0 ? e / f : -1, "%.2f") << " | " << cell(a) << " | "
+       << cell(a > 0 ? a / f : -1, "%.2f") << " |\n";
   }
 
   md << "\n## Stages\n\n"
@@ -240,8 +240,8 @@ int main(int argc, char **argv) {
             << fmt("%.0f", c) << " ms vs " << fmt("%.0f", f) << " ms, " << f1 << " faces) | "
             << met(c / f <= 1.5) << " |\n";
   }
-  for (const auto &[fam, label] : {std::pair{"extended", "extended method"},
-                                    std::pair{"strict", "extended method, strict guard"}}) {
+  for (const auto &[fam, label] :
+       {std::pair{"extended", "extended method"}, std::pair{"auto", "auto method"}}) {
     const long f1 = nearest(floor, 1e6);
     const double f = ms(floor.at(f1)), e = familyMs(fam, f1);
     if (e < 0) continue;

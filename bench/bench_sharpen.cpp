@@ -3,8 +3,8 @@
 //                the unavoidable work, on the same mesh in the same binary
 //   core/F/T     edge_sharpener::sharpen() on a fresh copy, T OpenMP threads
 //                (counters: seconds per call between its progress callbacks)
-//   extended/F, strict/F  the same with the extended method (and its strict
-//                plane guard), all threads
+//   extended/F, auto/F  the same with the extended and the auto method, all
+//                threads
 //   stages/F     the detection stages, split plan and subdivision one by one
 // Usage: edge-sharpener-bench --meshes=a.ply,b.ply [benchmark flags]
 // scripts/bench-performance.sh runs it and writes docs/performance.md.
@@ -262,12 +262,10 @@ int main(int argc, char **argv) {
           ->Iterations(iterations);
     es::SharpenOptions extended;
     extended.method = es::Method::Extended;
-    es::SharpenOptions strict = extended;
-    strict.setStrictPlaneGuard(true);
     es::SharpenOptions autoMethod;  // the default
     autoMethod.method = es::Method::Auto;
-    for (const auto &[name, opt] : {std::pair{"extended/", extended}, std::pair{"strict/", strict},
-                                    std::pair{"auto/", autoMethod}})
+    for (const auto &[name, opt] :
+         {std::pair{"extended/", extended}, std::pair{"auto/", autoMethod}})
       benchmark::RegisterBenchmark((name + faces).c_str(), benchCore, path, hardwareThreads(), opt)
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond)

@@ -8,7 +8,7 @@
 # sampler family (MeshLab's UMR, IER, CSG, Screened Poisson, RIMLS; the project's MC; OpenVDB's
 # voxel remesher, bench/samplers/vdb-remesh; TSDF depth scans, bench/samplers/tsdf_scan.py):
 # inputs and MeshLab's UnSharp Mask peer outputs are cached in BUILD/quality-cache (--refresh
-# remakes them); every run re-sharpens (paper, extended, strict, grid, strict + grid) and
+# remakes them); every run re-sharpens (paper, extended, auto) and
 # re-measures (mesh-distance --sampling meshlab). The time of a full run is in docs/results.md.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

@@ -8,10 +8,14 @@ rounding change can be told from a behaviour change.
 
   scripts/check_identical.py BEFORE_CLI AFTER_CLI [--inputs DIR_OR_FILE ...]
                              [--generated] [--distance MESH_DISTANCE] [--jobs N]
+                             [--variants a,b] [--removed-fields PATH,...]
 
 --generated adds the project's exact shapes resampled by its own marching cubes at 2, 1 and
 0.5% (generate-test-meshes from AFTER's build). Inputs the CLI refuses must be refused by
-both builds. Exit status 0 when every output is identical (or refused by both).
+both builds. --removed-fields names the report fields (dotted paths: a key or a whole
+object) that AFTER no longer writes: they are left out of the comparison, but BEFORE must
+report them as zero or false on every run ("removed field not zero" otherwise). Exit status
+0 when every output is identical (or refused by both).
 """
 import argparse
 import concurrent.futures
@@ -32,9 +36,11 @@ VARIANTS = {
     "extended-colorize": ["--method", "extended", "--colorize"],
     "extended-m1.5": ["--method", "extended", "--multiplier", "1.5"],
     "extended-m3": ["--method", "extended", "--multiplier", "3"],
-    "extended-strict": ["--method", "extended", "--strict"],
-    "extended-grid": ["--method", "extended", "--grid-guard"],
-    "extended-strict-grid": ["--method", "extended", "--strict", "--grid-guard"],
+    "extended-detect": ["--method", "extended", "--detect-only"],
+    "auto": ["--method", "auto"],
+    "auto-colorize": ["--method", "auto", "--colorize"],
+    "auto-m1.5": ["--method", "auto", "--multiplier", "1.5"],
+    "auto-m3": ["--method", "auto", "--multiplier", "3"],
 }
 MESH_SUFFIXES = (".ply", ".off", ".obj", ".stl")
 
@@ -59,17 +65,43 @@ def run(cli, mesh, out, args):
     return (digest(out), report), ""
 
 
+def is_zero(value):
+    """Whether a report value (or every value of an object) is 0, 0.0 or false."""
+    if isinstance(value, dict):
+        return all(is_zero(v) for v in value.values())
+    return value is None or value == 0
+
+
+def pop_path(report, path):
+    """Removes the dotted `path` from `report`; returns its value (None when absent)."""
+    *parents, last = path.split(".")
+    for key in parents:
+        report = report.get(key)
+        if not isinstance(report, dict):
+            return None
+    return report.pop(last, None)
+
+
 def compare(job):
-    before_cli, after_cli, mesh, variant, workdir, distance = job
+    before_cli, after_cli, mesh, variant, workdir, distance, removed = job
     stem = f"{os.path.basename(mesh)}.{variant}"
     out_a = os.path.join(workdir, stem + ".before.ply")
     out_b = os.path.join(workdir, stem + ".after.ply")
     a, err_a = run(before_cli, mesh, out_a, VARIANTS[variant])
     b, err_b = run(after_cli, mesh, out_b, VARIANTS[variant])
     result = {"mesh": mesh, "variant": variant}
+    not_zero = []
+    if a is not None and b is not None:
+        for path in removed:
+            if not is_zero(pop_path(a[1], path)):
+                not_zero.append(path)
+            pop_path(b[1], path)
     if a is None or b is None:
         result["status"] = "refused by both" if a is None and b is None else "refused by one"
         result["detail"] = err_a or err_b
+    elif not_zero:
+        result["status"] = "removed field not zero"
+        result["detail"] = ", ".join(not_zero)
     elif a == b:
         result["status"] = "identical"
     elif a[0] == b[0]:
@@ -117,6 +149,8 @@ def main():
     ap.add_argument("--generated", action="store_true")
     ap.add_argument("--distance", help="mesh-distance binary (to size differences)")
     ap.add_argument("--variants", default=",".join(VARIANTS))
+    ap.add_argument("--removed-fields", default="",
+                    help="comma-separated dotted report paths AFTER no longer writes")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     args = ap.parse_args()
 
@@ -130,14 +164,16 @@ def main():
                            capture_output=True)
             meshes += sorted(glob.glob(os.path.join(gen_dir, "*_mc*.ply")))
         variants = args.variants.split(",")
-        jobs = [(args.before_cli, args.after_cli, m, v, workdir, args.distance)
+        removed = [p for p in args.removed_fields.split(",") if p]
+        jobs = [(args.before_cli, args.after_cli, m, v, workdir, args.distance, removed)
                 for m in meshes for v in variants]
         counts = {}
         problems = []
         with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
             for r in pool.map(compare, jobs):
                 counts[r["status"]] = counts.get(r["status"], 0) + 1
-                if r["status"] in ("different", "report differs", "refused by one"):
+                if r["status"] in ("different", "report differs", "refused by one",
+                                   "removed field not zero"):
                     problems.append(r)
                     print(f"{r['status']}: {r['mesh']} [{r['variant']}] {r.get('detail', '')}",
                           flush=True)

@@ -8,7 +8,5 @@ if(TARGET test_meshes AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/test_sharpen_shapes
   edge_sharpener_test(sharpen_shapes_tests test_sharpen_shapes.cpp)
   target_link_libraries(sharpen_shapes_tests PRIVATE test_meshes)
 endif()
-edge_sharpener_test(sampling_grid_tests test_sampling_grid.cpp)
-target_link_libraries(sampling_grid_tests PRIVATE test_meshes)
 edge_sharpener_test(determinism_tests test_determinism.cpp)
 target_link_libraries(determinism_tests PRIVATE test_meshes)

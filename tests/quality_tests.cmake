@@ -13,8 +13,8 @@
 #                               MeshLab's UnSharp Mask peer measured (skipped without OpenVDB or
 #                               Open3D).
 #   quality.fandisk_targets     fandisk (../shared/meshes) resampled by MeshLab at 2/1/0.5%:
-#                               the met headline targets (skipped without ../shared).
-#   quality.cad_as_is           the ../shared meshes sharpened as they are (extended, strict):
+#                               the met headline target (skipped without ../shared).
+#   quality.cad_as_is           the ../shared meshes sharpened as they are (auto, extended):
 #                               no vertex thrown far away (skipped without ../shared).
 # The full benchmark (docs/results.md) is scripts/bench-quality.sh, not a test.
 # All exit 77 (skipped) when MeshLab or python3 is not installed, fandisk_targets also without

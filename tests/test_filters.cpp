@@ -336,11 +336,10 @@ TEST(Fallbacks, CornerPairBendsAwayWhereTheCornerDoesNot) {
   EXPECT_LT(target.Norm(), 1e-12);
 }
 
-// The strict plane guard: an inserted vertex whose source lies off its own
-// plane (a blend's sample, not a flank's) stays at rest; within the limit,
-// or with the guard off, it moves onto the planes' edge. So does one whose
-// sharp edge lies more than maxDisplacementSpacings sample spacings away.
-TEST(Fallbacks, SourceOffItsPlaneKeepsVertexAtRest) {
+// An inserted vertex whose sharp edge lies more than maxDisplacementSpacings
+// sample spacings away stays at rest; within the bound, or with the bound
+// off, it moves onto the planes' edge.
+TEST(Fallbacks, SharpEdgeFarAwayKeepsVertexAtRest) {
   using es::Plane;
   using es::Vec3;
   // Solid x, z <= 0: side A (x = 0) and top B (z = 0), chamfer from
@@ -349,7 +348,6 @@ TEST(Fallbacks, SourceOffItsPlaneKeepsVertexAtRest) {
   support.reset(2);
   support.setFit(0, es::SupportFit::of(Plane{Vec3(0, 0, -0.2), Vec3(1, 0, 0)}));
   support.setFit(1, es::SupportFit::of(Plane{Vec3(-0.2, 0, 0), Vec3(0, 0, 1)}));
-  support.offPlane = {0.0, 0.05};
   support.sampleSpacing = 0.1;
   es::InsertedVertexSource edge;
   edge.original = {0, 1, 0};
@@ -358,101 +356,15 @@ TEST(Fallbacks, SourceOffItsPlaneKeepsVertexAtRest) {
   es::SharpenOptions opt = es::SharpenOptions::paperMethod();
   opt.method = es::Method::Extended;
   Vec3 target;
-  ASSERT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::Moved);  // guard off
+  ASSERT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::Moved);
   EXPECT_LT(target.Norm(), 1e-12);
-  opt.setStrictPlaneGuard(true);  // limit 0.3 x 0.1 = 0.03 < 0.05
-  EXPECT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::OffPlaneSource);
-  opt.maxSourceOffPlaneSpacings = 0.6;  // limit 0.06 > 0.05
-  EXPECT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::Moved);
 
-  // The displacement bound: the sharp edge lies 0.141 from the chamfer's
-  // middle, more than 2.5 sample spacings of 0.05 but less than 2.5 x 0.1.
-  opt.setStrictPlaneGuard(false);
+  // The sharp edge lies 0.141 from the chamfer's middle, more than 2.5
+  // sample spacings of 0.05 but less than 2.5 x 0.1.
   support.sampleSpacing = 0.05;
   EXPECT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::FarFromChamfer);
   opt.maxDisplacementSpacings = 0;  // bound off
   EXPECT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::Moved);
-}
-
-namespace {
-/// Flat (z = 0) up to x = 1, a strip one column wide tilted down by
-/// `stripDeg` from x = 1 to 1.1, then a steep drop (the zone).
-double flatThenStrip(double x, double stripDeg) {
-  const double t = std::tan(stripDeg * M_PI / 180);
-  if (x <= 1.0 + 1e-9) return 0.0;
-  if (x <= 1.1 + 1e-9) return -t * (x - 1.0);
-  return -t * 0.1 - 2.0 * (x - 1.1);
-}
-}  // namespace
-
-// Region faces next to the zone that turn away from their region's fitted
-// plane (a strip of chamfer faces that grew into the region) return to the
-// zone; a flat region's border stays.
-TEST(Extended, TurnedBorderStripReturnsToTheZone) {
-  for (const double stripDeg : {0.0, 40.0}) {
-    es::Mesh m;
-    makeHeightField(m, kNx, kNy, kH, [&](double x, double) { return flatThenStrip(x, stripDeg); });
-    es::MeshLabels<es::Mesh> labels(m);
-    es::FeatureZones zones;
-    zones.faceRegion.assign(m.face.size(), es::kZone);
-    std::size_t stripFaces = 0;
-    for (std::size_t f = 0; f < m.face.size(); ++f) {
-      double cx = 0;
-      for (int k = 0; k < 3; ++k) cx += m.face[f].cP(k)[0] / 3.0;
-      if (cx < 1.1) zones.faceRegion[f] = 0;
-      stripFaces += cx > 1.0 && cx < 1.1;
-    }
-    es::SharpenOptions opt = es::SharpenOptions::paperMethod();
-    opt.method = es::Method::Extended;
-    opt.supportRings = 4;  // enough flat faces to outweigh the strip in the fit
-    const es::VertexFaceTable vf(m);
-    const std::size_t returned =
-        es::returnTurnedBorderFaces(m, labels, vf, opt, 10 * M_PI / 180, zones);
-    if (stripDeg == 0) {
-      EXPECT_EQ(returned, 0u);
-      continue;
-    }
-    EXPECT_EQ(returned, stripFaces);
-    for (std::size_t f = 0; f < m.face.size(); ++f) {
-      double cx = 0;
-      for (int k = 0; k < 3; ++k) cx += m.face[f].cP(k)[0] / 3.0;
-      EXPECT_EQ(zones.faceRegion[f], cx < 1.0 ? 0 : es::kZone) << "face " << f << " at x " << cx;
-    }
-  }
-}
-
-// The strict guard's seeded fit: a strip of chamfer faces (20 degrees) that
-// grew into a flat region tilts the plane fitted at its border, since the
-// trim (15 degrees) is centred on the tilted mean; centred on the faces that
-// touch no zone vertex, the trim drops the strip and the plane is exact.
-TEST(Extended, SeededFitIgnoresAnAbsorbedChamferStrip) {
-  es::Mesh m;
-  makeHeightField(m, kNx, kNy, kH, [](double x, double) { return flatThenStrip(x, 20.0); });
-  es::FeatureZones zones;
-  zones.faceRegion.assign(m.face.size(), es::kZone);
-  for (std::size_t f = 0; f < m.face.size(); ++f) {
-    double cx = 0;
-    for (int k = 0; k < 3; ++k) cx += m.face[f].cP(k)[0] / 3.0;
-    if (cx < 1.1) zones.faceRegion[f] = 0;
-  }
-  const es::VertexFaceTable vf(m);
-  const std::vector<char> nearZone = es::verticesTouchingZone(m, vf, zones);
-  const std::size_t border = std::size_t(kNy / 2) * (kNx + 1) + 11;  // x = 1.1, middle row
-  ASSERT_TRUE(nearZone[border]);
-  std::vector<int> stamp(m.face.size(), -1);
-  es::SharpenOptions opt = es::SharpenOptions::paperMethod();
-  opt.method = es::Method::Extended;
-  const es::Vec3 up(0, 0, 1);
-
-  const es::RegionPlaneFit plain = es::fitRegionPlane(
-      m, vf, zones, border, 0, es::PlaneFitSettings::from(opt, nearZone), stamp, 0);
-  EXPECT_GT(es::angleBetween(plain.plane.normal, up), 5 * M_PI / 180);  // tilted by the strip
-
-  opt.setStrictPlaneGuard(true);
-  const es::RegionPlaneFit seeded = es::fitRegionPlane(
-      m, vf, zones, border, 0, es::PlaneFitSettings::from(opt, nearZone), stamp, 1);
-  EXPECT_LT(es::angleBetween(seeded.plane.normal, up), 1e-9);
-  EXPECT_NEAR(seeded.plane.point[2], 0.0, 1e-9);
 }
 
 // The intersection guard's broad phase: a hashed grid over the query boxes.

@@ -16,8 +16,7 @@ FLOOR = 1e-4  # % of the diagonal
 # References without sharp features: they are in the worse counts (they must not be
 # damaged) but not in the geometric means (there is nothing to reduce).
 NO_SHARP_FEATURES = ("sphere", "rocker-arm")
-COLUMNS = (("paper", "paper"), ("auto", "auto (default)"), ("extended", "extended"), ("extended-strict", "strict"),
-           ("extended-grid", "grid"), ("extended-strict-grid", "strict + grid"),
+COLUMNS = (("paper", "paper"), ("auto", "auto (default)"), ("extended", "extended"),
            ("unsharp-mask", "UnSharp Mask (MeshLab)"))
 FAMILY_ORDER = ("umr", "mc", "vdb", "ier", "csg", "poisson", "scan", "rimls", "asis")
 FAMILY_TITLES = {
@@ -281,8 +280,7 @@ def section(results, causes):
       "references, every resolution of the family) out of the outputs measured; *failed* = the "
       "sharpener refused the input (open or non-manifold scans) or the tool failed (listed "
       "below). Default multiplier "
-      f"{mult:g}. *strict* = `--method extended --strict`, *grid* = `--method extended "
-      "--grid-guard`; *UnSharp Mask (MeshLab)* = MeshLab 2020.09's stock \"UnSharp Mask "
+      f"{mult:g}. *UnSharp Mask (MeshLab)* = MeshLab 2020.09's stock \"UnSharp Mask "
       "Geometry\" at its defaults (weight 0.3, original weight 1, 5 iterations), the peer a "
       "MeshLab user already has. Distances: `mesh-distance --sampling "
       + " ".join(results.get("distance_sampling", ["uniform"])[1:]) + "` (vertices, edge "

@@ -13,14 +13,9 @@ import families
 PAPER_CLAIM = ("fandisk remeshed by SwingWrapper: max error 0.89% -> 0.43% of the diagonal "
                "(x2.07); L2 error about a fifth (x5) for dense remeshings (Figure 10)")
 WORSE_TOLERANCE = 0.01  # "worse" = more than 1% above the input (sampling noise is below 0.3%)
-# The runs' variants (run.py VARIANTS): the two methods, and the extended method with the
-# opt-in strict plane guard (default multiplier only).
-VARIANTS = ("paper", "auto", "extended", "extended-strict")
-LABELS = {"paper": "paper", "auto": "auto (default)", "extended": "extended",
-          "extended-strict": "strict"}
-STRICT = "extended-strict"
-# The opt-in sampling-grid guard, each against the variant it is added to.
-GRID_PAIRS = (("extended", "extended-grid"), ("extended-strict", "extended-strict-grid"))
+# The runs' variants (run.py VARIANTS): the three methods.
+VARIANTS = ("paper", "auto", "extended")
+LABELS = {"paper": "paper", "auto": "auto (default)", "extended": "extended"}
 
 
 def gmean(values):
@@ -118,11 +113,7 @@ def write(results, tools, cache, docs):
       f"`edge-sharpener --method`, default parameters (multiplier {m:g}, length check on); "
       "*auto* is the extended method with the evidence guard (a feature is kept only when "
       "placement's tests agree along it and its samples lie on its planes; nothing is kept "
-      "when most moves are refused: `vcg_ext/edge_sharpener/guards/feature_evidence.h`); "
-      "*strict* (*extended-strict*) is the extended method with the opt-in strict plane guard "
-      "(`--method extended --strict`: border faces turned from their region's plane return to "
-      "the zone, and a vertex whose source lies more than 0.3 median edge lengths off its plane "
-      "stays at rest). "
+      "when most moves are refused: `vcg_ext/edge_sharpener/guards/feature_evidence.h`). "
       "Inputs are made by Debian's real `meshlabserver` 2020.09 from the reference: "
       "Uniform Mesh Resampling (marching cubes; cell = % of the diagonal, Clean Vertices off), "
       "Isotropic Explicit Remeshing (target length = % of the diagonal, crease angle 181° = no "
@@ -160,19 +151,6 @@ def write(results, tools, cache, docs):
             "inputs excluded), default multiplier. *worse* counts inputs whose max or RMS "
             f"came out more than {WORSE_TOLERANCE:.0%} above the input's.",
             summary_table(cases, m))
-
-    # ---- sampling-grid guard
-    section("The opt-in sampling-grid guard (`--grid-guard`)",
-            "On inputs whose vertices all lie on the edges of one axis-aligned grid (marching "
-            "cubes; detected from the coordinates), a moved vertex goes back to rest when its "
-            "faces sweep over a grid node the input's sampling put on the other side of the "
-            "surface, and when a tenth of the moves between two regions went back so, the rest "
-            "of that feature follows (`vcg_ext/edge_sharpener/sampling_grid.h`). Each variant "
-            "with the guard against the same variant without it, default multiplier: geometric "
-            "means of the reduction factors over the inputs with sharp features, and how many "
-            "inputs the guard changed (better / worse: max or RMS more than "
-            f"{WORSE_TOLERANCE:.0%} lower / higher than without it).",
-            grid_guard_table(cases, m), grid_guard_changes(cases, m))
 
     # ---- worse cases
     section("Where sharpening made it worse",
@@ -294,61 +272,6 @@ def summary_row(label, cs, m):
     return "| " + " | ".join(cells) + " |"
 
 
-def grid_guard_table(cases, m):
-    rows = ["| input | n | " + " | ".join(
-                f"{base}: max / RMS | {guarded}: max / RMS | better / worse"
-                for base, guarded in GRID_PAIRS) + " |",
-            "|---|---|" + "---|---|---|" * len(GRID_PAIRS)]
-    groups = {}
-    for c in sharp_cases(cases):
-        groups.setdefault((c["input_title"], c["resolution"], c["order"]), []).append(c)
-    ordered = sorted(groups.items(), key=lambda kv: kv[0][2])
-    allc = [c for _, cs in ordered for c in cs]
-    for label, cs in [(f"{t} {r}", cs) for (t, r, _), cs in ordered] + [("**all**", allc)]:
-        cells = [label, str(len(cs))]
-        for base, guarded in GRID_PAIRS:
-            pairs = [(c, run_of(c, base, m), run_of(c, guarded, m)) for c in cs]
-            pairs = [p for p in pairs if p[1] and p[2]]
-            for method_index in (1, 2):
-                max_f = gmean([factor(p[0]["before"]["max"], p[method_index]["after"]["max"])
-                               for p in pairs])
-                rms_f = gmean([factor(p[0]["before"]["rms"], p[method_index]["after"]["rms"])
-                               for p in pairs])
-                cells.append(f"{fx(max_f)} / {fx(rms_f)}")
-            better = sum(1 for _, a, b in pairs if changed(a, b) < 0)
-            worse = sum(1 for _, a, b in pairs if changed(a, b) > 0)
-            cells.append(f"{better} / {worse}")
-        rows.append("| " + " | ".join(cells) + " |")
-    return "\n".join(rows)
-
-
-def changed(without, with_guard):
-    """+1 when the guard made max or RMS worse by more than the tolerance, -1 when it
-    made one better and neither worse, 0 otherwise."""
-    a, b = without["after"], with_guard["after"]
-    if b["max"] > a["max"] * (1 + WORSE_TOLERANCE) or b["rms"] > a["rms"] * (1 + WORSE_TOLERANCE):
-        return 1
-    if b["max"] < a["max"] * (1 - WORSE_TOLERANCE) or b["rms"] < a["rms"] * (1 - WORSE_TOLERANCE):
-        return -1
-    return 0
-
-
-def grid_guard_changes(cases, m):
-    rows = ["Every input the guard changed by more than the tolerance (% of the diagonal):", "",
-            "| model | input | variant | max without -> with | RMS without -> with | input max / RMS |",
-            "|---|---|---|---|---|---|"]
-    for c in sharp_cases(cases):
-        for base, guarded in GRID_PAIRS:
-            a, b = run_of(c, base, m), run_of(c, guarded, m)
-            if not a or not b or changed(a, b) == 0:
-                continue
-            rows.append(f"| {c['model']} | {c['input_title']} {c['resolution']} | {guarded} | "
-                        f"{fmt(a['after']['max'])} -> {fmt(b['after']['max'])} | "
-                        f"{fmt(a['after']['rms'])} -> {fmt(b['after']['rms'])} | "
-                        f"{fmt(c['before']['max'])} / {fmt(c['before']['rms'])} |")
-    return "\n".join(rows)
-
-
 # Why a model comes out worse, as diagnosed by hand (the inserted vertices and fitted
 # planes at the worst points, against the reference's own faces). Printed for the
 # models that appear in the worse table.
@@ -363,29 +286,18 @@ WORSE_CAUSES = {
         "moves 25 vertices there (at most 1.04 units, 55 kept by the convexity test) and the "
         "farthest rim point of the reference moves from 0.917% to 0.937% away. The bottom edges "
         "of the plate are rounded (fillets of radius 6.35, 1.7 cells at 1%, in 15-degree "
-        "facets): the strict plane guard keeps the wall strip's tilted plane from acting where "
-        "its sources lie off it (0.5% is no longer worse with it), but at 1% the fillet's "
-        "samples lie on the two planes' extensions within 0.3 spacings and it squares the "
-        "fillet off (max 0.386 -> 0.823): the paper's small-radius-blend limit. The opt-in "
-        "sampling-grid guard finds grid nodes that the resampling saw outside a fillet (0.65 "
-        "cells from it) swept inside by the squared-off edge and sends those moves back, and "
-        "with them the rest of each fillet whose moves a tenth went back (1%, strict: max "
-        "0.823 -> 0.482; 0.5%, extended: RMS 0.057 -> 0.018). What is left at 1% (strict, "
-        "grid: max 0.482) is the top edge at the plate's rounded corners in plan view (walls "
-        "in 15-degree facets 1.8 cells wide): the wall's plane, fitted over two rings of "
-        "faces, comes from the facet before, and the sharp top edge lands 1.8 units (half a "
-        "cell) outside the outline."),
+        "facets): their samples lie close to the two planes' extensions, and sharpening squares "
+        "the fillets off: the paper's small-radius-blend limit."),
     "fandisk": (
         "with CSG 1% (extended), the worst point (0.013, -0.928, -0.349) is where a face 0.05 "
         "wide (1.7 cells) at x = 0 meets the front face: the plane fitted to the narrow face and "
         "the front face's plane meet 0.96% of the diagonal from the reference's edge. Same limit "
-        "as plate_holes; the strict plane guard keeps it at rest (max 0.471). With IER 1% at "
-        "multiplier 1.5 the worst points (0.411, -0.998, 0.337) are a corner of the vertical "
+        "as plate_holes. With IER 1% at multiplier 1.5 the worst points (0.411, -0.998, 0.337) "
+        "are a corner of the vertical "
         "blend between the front and the side face (a cylinder of radius 0.1, 3.4 samples, in "
         "22-degree facets): at the lower threshold every facet is zone, and the front, side and "
         "back planes meet at the corner of the blend's bounding box, 1.25% of the diagonal "
-        "outside it (the paper's small-radius-blend limit); the strict plane guard keeps it "
-        "(max 0.558 at multiplier 1.5)."),
+        "outside it (the paper's small-radius-blend limit)."),
     "octa-flower17k": (
         "with Screened Poisson (depth 7, cells of about 0.3 units), the worst points are inserted "
         "vertices at the petals' tips (x = 17.7): the reconstruction rounds each acute tip back "
@@ -406,9 +318,7 @@ WORSE_CAUSES = {
         "normal (-0.5, -0.866, 0)); the sharpener restores the edge the designer bevelled. A "
         "chamfer a few samples wide cannot be told from a sampling chamfer without other "
         "information (paper, section 5). At 0.5% the worst points are inserted vertices on the "
-        "top plane 2.6e-5 units (0.7 cells) beyond the bevel's upper edge; the opt-in "
-        "sampling-grid guard sends back only 3 moves there: so thin a swept volume holds no "
-        "grid node to witness against it."),
+        "top plane 2.6e-5 units (0.7 cells) beyond the bevel's upper edge."),
 }
 
 
@@ -586,7 +496,7 @@ def plot_resolution(cases, model, m, path):
             xs = [c["before"]["faces"] for c in cs]
             ax.plot(xs, [c["before"][key] for c in cs], "o-", color=color, alpha=0.45,
                     label=f"{label}: input")
-            for method, style in (("paper", "s--"), ("extended", "^-"), (STRICT, "v:")):
+            for method, style in (("paper", "s--"), ("extended", "^-"), ("auto", "v:")):
                 pts = [(c["before"]["faces"], run_of(c, method, m)) for c in cs]
                 pts = [(x, r["after"][key]) for x, r in pts if r]
                 if pts:

@@ -12,9 +12,9 @@ the validation half fixed by bench/quality/split.json) it
      in a TSDF (bench/samplers/tsdf_scan.py); they are cached in CACHE/inputs (a failure or
      time-out is cached and reported, not fatal);
   2. sharpens each with the edge-sharpener CLI (identical to the MeshLab filter): every
-     method and variant (paper, extended, extended-strict, extended-grid,
-     extended-strict-grid) at the default multiplier, and a multiplier sweep; and MeshLab's
-     stock "UnSharp Mask Geometry" at its defaults as the peer (cached like the inputs);
+     method (paper, extended, auto) at the default multiplier, and a multiplier sweep; and
+     MeshLab's stock "UnSharp Mask Geometry" at its defaults as the peer (cached like the
+     inputs);
   3. measures every mesh against the reference with mesh-distance --json --sampling meshlab
      (two-sided, samples spread as MeshLab's Hausdorff Distance filter spreads them);
   4. writes CACHE/results.json and, unless --no-report, docs/results.md and
@@ -45,13 +45,8 @@ import meshlab  # noqa: E402
 
 METHODS = ("paper", "extended", "auto")
 # Every run is one of these variants of the CLI (the name is the run's "method").
-# The strict plane guard and the sampling-grid guard are opt-in: they run at the default
-# multiplier only.
 VARIANTS = {"paper": ["--method", "paper"], "extended": ["--method", "extended"],
-            "auto": ["--method", "auto"],
-            "extended-strict": ["--method", "extended", "--strict"],
-            "extended-grid": ["--method", "extended", "--grid-guard"],
-            "extended-strict-grid": ["--method", "extended", "--strict", "--grid-guard"]}
+            "auto": ["--method", "auto"]}
 SWEPT_VARIANTS = METHODS
 DEFAULT_MULTIPLIER = 2.0
 SWEEP = (1.5, 2.0, 2.5, 3.0)

@@ -52,9 +52,10 @@ int FilterEdgeSharpenerPlugin::postCondition(const QAction *action) const {
 RichParameterList FilterEdgeSharpenerPlugin::initParameterList(const QAction *action,
                                                                const MeshModel &) {
   RichParameterList par;
-  // The parameters 2020.09 shows; the non-ordinary ones (the extended method's
-  // guards) go behind the dialog's "advanced parameters" toggle. The `hidden`
-  // constructor argument is RichParameter's isAdvanced.
+  // The parameters 2020.09 shows; a non-ordinary one (a method's tuning), should
+  // the option table give the filter any, goes behind the dialog's "advanced
+  // parameters" toggle. The `hidden` constructor argument is RichParameter's
+  // isAdvanced.
   for (const auto *spec : esm::parametersOf(esm::filterSpec(ID(action))))
     esm::addParameter(par, *spec, /*hidden=*/!spec->ordinary());
   return par;

@@ -162,8 +162,7 @@ py::object pythonValue(const es::OptionSpec &spec, double value) {
   return py::float_(value);
 }
 
-/// The core's options: its defaults, then every keyword given, in table order
-/// (so a preset such as `strict` comes before the settings it presets).
+/// The core's options: its defaults, then every keyword given, in table order.
 /// \throws TypeError for an unknown keyword or a value of the wrong kind,
 ///         InputError for a value out of range.
 es::SharpenOptions optionsFrom(const py::kwargs &given, const char *function) {

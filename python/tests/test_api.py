@@ -88,19 +88,10 @@ def test_options_come_from_the_table():
         assert option["key"] in es.sharpen.__doc__ and option["key"] in es.detect.__doc__
     # Every option can be given; the values come back in the report.
     _, _, report = es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F, method="extended", multiplier=1.5,
-                              support_rings=3, degenerate_angle_deg=2, sampling_grid_guard=True)
+                              support_rings=3, degenerate_angle_deg=2, open_region_contacts=False)
     assert report["options"]["multiplier"] == 1.5 and report["options"]["support_rings"] == 3
     assert report["options"]["degenerate_angle_deg"] == 2 and report["options"]["method"] == "extended"
-
-
-def test_a_preset_comes_before_the_settings_it_presets():
-    # strict sets max_source_off_plane_spacings to 0.3; a value given with it wins,
-    # whatever the keyword order.
-    for kwargs in ({"strict": True, "max_source_off_plane_spacings": 0.7},
-                   {"max_source_off_plane_spacings": 0.7, "strict": True}):
-        _, _, report = es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F, method="extended", **kwargs)
-        assert report["options"]["max_source_off_plane_spacings"] == 0.7
-        assert report["options"]["fit_seed_flat_angle_deg"] == 4
+    assert report["options"]["open_region_contacts"] is False
 
 
 def test_colorize_returns_colors(cube):

@@ -14,8 +14,9 @@ MESHES = ["cube_mc2", "lblock_mc2", "pyramid_mc2"]
 OPTION_SETS = [
     {},
     {"method": "extended"},
-    {"method": "extended", "strict": True},
-    {"method": "extended", "sampling_grid_guard": True, "multiplier": 1.5},
+    {"method": "extended", "open_region_contacts": False, "multiplier": 1.5},
+    {"method": "paper", "convexity_check": False},
+    {"max_feature_off_plane_spacings": 0.3, "min_feature_vertices": 5},
     {"multiplier": 3.0, "edge_length_check": False, "degenerate_angle_deg": 2.0},
 ]
 # Fields of the CLI's JSON that describe the run, not the result.

@@ -28,12 +28,9 @@ check_filter "Edge-Sharpener: Sharpen Chamfered Edges" "Enum|Method
 Float|Smooth-edge multiplier
 Bool|Edge-length check
 Bool|Colorize
-Float|Degenerate angle (deg)
-Bool|Strict plane guard (extended)
-Bool|Sampling-grid guard (extended)"
+Float|Degenerate angle (deg)"
 check_filter "Edge-Sharpener: Detect Chamfers" "Enum|Method
-Float|Smooth-edge multiplier
-Bool|Strict plane guard (extended)"
+Float|Smooth-edge multiplier"
 
 total=$(sed -n 's/^Total \([0-9]*\) filtering actions.*/\1/p' listing.out)
 log "meshlabserver reports $total filtering actions"

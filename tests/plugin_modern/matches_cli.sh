@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # MeshLab 2022.02 (trixie root, meshlab-filter-runner) gives the CLI's results:
-# Sharpen (sharpen.mlx: plain, with colours, extended method + strict plane guard)
+# Sharpen (sharpen.mlx: plain, with colours, the extended method)
 # and Detect (detect.mlx, paints and selects) on the generated marching-cubes
 # meshes and on an L-block resampled by stock 2022.02 Uniform Mesh Resampling.
 # Compared: vertices, faces, face and vertex colours, selected faces.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [[ -x ${ES_CLI:-} ]] || fail "the edge-sharpener CLI is not built (ES_CLI='${ES_CLI:-}')"
 
-sharpen_variants  # sharpen_colorize.mlx, sharpen_strict.mlx
+sharpen_variants  # sharpen_colorize.mlx, sharpen_extended.mlx
 
 # same NAME CLI-ARGS -- COMPARE-ARGS: the runner's NAME.plugin.ply vs the CLI's NAME.cli.ply.
 same() {
@@ -43,9 +43,10 @@ for in in "${inputs[@]}"; do
   ((colours >= 3)) || fail "$n: only $colours face colour(s): labels not painted"
   same "$n.color" "$in" --colorize -- --rel-tol 1e-5 --colors --vertex-colors
 
-  run_filter "$n.strict" -i "$in" -o "$ES_WORK_DIR/$n.strict.plugin.ply" --mask vc,fc,ff -s sharpen_strict.mlx
-  ((rc == 0)) || { cat "$n.strict.out" >&2; fail "$n: runner (strict) status $rc"; }
-  same "$n.strict" "$in" --method extended --strict -- --rel-tol 1e-5
+  run_filter "$n.extended" -i "$in" -o "$ES_WORK_DIR/$n.extended.plugin.ply" --mask vc,fc,ff \
+    -s sharpen_extended.mlx
+  ((rc == 0)) || { cat "$n.extended.out" >&2; fail "$n: runner (extended) status $rc"; }
+  same "$n.extended" "$in" --method extended -- --rel-tol 1e-5
 
   run_filter "$n.detect" -i "$in" -o "$ES_WORK_DIR/$n.detect.plugin.ply" --mask vc,fc,ff \
     -s "$SCRIPTS/detect.mlx" -l "$ES_WORK_DIR/$n.detect.log"
@@ -56,5 +57,5 @@ for in in "${inputs[@]}"; do
   ((selected > 0)) || fail "$n: no chamfer/corner face selected"
   same "$n.detect" "$in" --detect-only --colorize -- --rel-tol 0 --colors --vertex-colors --selection
   log "$n: MeshLab 2022.02 == CLI (sharpen $in_faces -> $out_faces faces, $colours face colours," \
-    "strict guard, detect $selected faces selected)"
+    "extended method, detect $selected faces selected)"
 done

@@ -1,11 +1,10 @@
 #!/usr/bin/env bash
 # Every mesh of ../shared/meshes sharpened as it is (exact CAD meshes, a scan: nothing is
-# chamfered) by the auto method (the default) and by the extended method, with and without the
-# strict plane guard. Auto: the mesh comes back unchanged, at most 0.1% of the diagonal away
-# (issue 20; measured below 1e-4% on every mesh but octa-flower17k). Extended: no vertex is
-# thrown far away (a CAD mesh's long slivers once let twirl move by 31% of its diagonal), the
-# change stays below 1.5% (measured at most 1.36%: fandisk's facetted blends). Skipped without
-# ../shared.
+# chamfered) by the auto method (the default) and by the extended method. Auto: the mesh comes
+# back unchanged, at most 0.1% of the diagonal away (issue 20; measured below 1e-4% on every
+# mesh but octa-flower17k). Extended: no vertex is thrown far away (a CAD mesh's long slivers
+# once let twirl move by 31% of its diagonal), the change stays below 1.5% (measured at most
+# 1.36%: fandisk's facetted blends). Skipped without ../shared.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 shared="$ES_SOURCE_DIR/../shared/meshes"
 [[ -d $shared ]] || { echo "$shared not found: skipped"; exit $SKIP; }
@@ -19,10 +18,9 @@ for mesh in "$shared"/*; do
   case "${mesh,,}" in *.off | *.stl | *.obj | *.ply) ;; *) continue ;; esac
   name=$(basename "$mesh")
   [[ $name == chamfer-cube.off ]] && continue  # polygonal: not a triangle mesh
-  for variant in auto extended extended-strict; do
+  for variant in auto extended; do
     out="$ES_WORK_DIR/${name%.*}-${variant}.ply"
-    args=(--method "${variant%-strict}")
-    [[ $variant == *-strict ]] && args+=(--strict)
+    args=(--method "$variant")
     limit=$extended_limit
     if [[ $variant == auto ]]; then
       limit=$auto_limit

@@ -15,11 +15,6 @@
   (Until the self-intersection guard's grid saw faces in its last, partial cell, the UMR
   means were x1.91 / x8.45: the wedge's 35-degree edge, at the largest x, was sharpened
   into 154 crossing face pairs that went unseen; its tip now stays chamfered.)
-- The extended method with the strict plane guard (--strict) likewise: UMR 1% max x1.57 /
-  RMS x6.61; project MC 1% max x3.74 / RMS x7.47 (the pyramid's acute base corners, whose
-  truncated tips lie off both flanks' planes, stay chamfered: x1.06 / x1.62).
-- Both with the opt-in sampling-grid guard (--grid-guard) reach the same floors as without
-  it: on these exact sharp shapes it sends no vertex back (measured: the same factors).
 - The auto method (the default) likewise: UMR 1% measured max x1.47 / RMS x6.50 over the five
   shapes (x2.02 / x6.99 with the cube); project MC 1%: max x2.50 / RMS x4.00 over seven (the
   evidence guard leaves some of the pyramid's and the wedge's acute features chamfered).
@@ -36,10 +31,7 @@ CAP = 10.0          # factors are capped in the means (the cube can come out exa
 # (max factor, RMS factor) at about 80% of the measured geometric means
 MIN_FACTORS = {"paper": {"umr": (1.08, 1.6), "mc": (1.1, 1.3)},
                "extended": {"umr": (1.25, 5.3), "mc": (3.7, 7.7)},
-               "extended-strict": {"umr": (1.25, 5.3), "mc": (3.0, 6.0)},
                "auto": {"umr": (1.17, 5.2), "mc": (2.0, 3.2)}}
-MIN_FACTORS["extended-grid"] = MIN_FACTORS["extended"]
-MIN_FACTORS["extended-strict-grid"] = MIN_FACTORS["extended-strict"]
 
 
 def gmean(v):

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # fandisk (../shared/meshes) resampled by MeshLab's Uniform Mesh Resampling at 2%, 1% and
-# 0.5% cells, sharpened by every variant of the benchmark: the headline targets of issues 4
-# and 7 that are met, asserted (check_fandisk_targets.py). Skipped without ../shared.
+# 0.5% cells, sharpened by every method of the benchmark: the headline target that is met,
+# asserted (check_fandisk_targets.py). Skipped without ../shared.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 shared="$ES_SOURCE_DIR/../shared/meshes"
 if [[ ! -f $shared/fandisk.off ]]; then

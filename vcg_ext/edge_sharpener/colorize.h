@@ -24,8 +24,8 @@ inline vcg::Color4b faceLabelColor(FaceLabel label) {
 /// Moved: yellow; kept at rest: parallel planes magenta, coplanar normals
 /// cyan, no support plane black, edge too long orange, mixed convexity
 /// purple, reverted by cleanup white, far from the chamfer brown, curved support teal,
-/// reverted by the self-intersection guard pink, off-plane source (strict
-/// guard) olive.
+/// reverted by the self-intersection guard pink, weak evidence (auto method)
+/// olive.
 inline vcg::Color4b placementColor(Placement p, VertexLabel label) {
   switch (p) {
     case Placement::Original:
@@ -41,8 +41,6 @@ inline vcg::Color4b placementColor(Placement p, VertexLabel label) {
     case Placement::FarFromChamfer: return vcg::Color4b(140, 80, 20, 255);
     case Placement::CurvedSupport: return vcg::Color4b(0, 120, 120, 255);
     case Placement::IntersectionRevert: return vcg::Color4b(255, 150, 200, 255);
-    case Placement::OffPlaneSource: return vcg::Color4b(128, 128, 0, 255);
-    case Placement::GridRevert: return vcg::Color4b(0, 128, 128, 255);
     case Placement::WeakEvidence: return vcg::Color4b(128, 128, 0, 255);
   }
   return vcg::Color4b(160, 160, 160, 255);

@@ -1,11 +1,10 @@
 // The extended method's two stages as sharpen() calls them: detection
 // (smooth regions, the feature zone between them, zone labels, chamfer
 // edges) in place of the paper's six filters, and the refinement after the
-// paper's placement (zone projection, the opt-in sampling-grid guard).
+// paper's placement (zone projection).
 #pragma once
 
 #include "extended/feature_zones.h"
-#include "guards/sampling_grid.h"
 #include "guards/vertex_moves.h"
 #include "options.h"
 #include "report.h"
@@ -13,7 +12,7 @@
 namespace edge_sharpener {
 
 /// Detection by feature zones: smooth regions segmented; faces returned to
-/// the zone where regions touch, crease or (strict) turn from their plane;
+/// the zone where regions touch or crease;
 /// zone vertices labelled with the surface they sample; chamfer edges
 /// marked between differently labelled vertices. Fills `zones` (support
 /// planes included) and report.extended / report.filters.
@@ -37,15 +36,8 @@ void detectFeatureZones(MeshType &m, MeshLabels<MeshType> &labels, const Sharpen
     stats.openedCreases = openInternalCreases(m, labels, vf, creaseAngle, zones);
     stats.zoneFaces += stats.openedCreases;
   }
-  if (opt.borderTurnThresholdFactor > 0) {
-    stats.returnedBorderFaces = returnTurnedBorderFaces(
-        m, labels, vf, opt, opt.borderTurnThresholdFactor * report.smooth.thresholdRad, zones);
-    stats.zoneFaces += stats.returnedBorderFaces;
-  }
   labelZoneVertices(m, vf, opt, zones, stats);
-  if (opt.samplingGridGuard) zones.samplingGrid = detectSamplingGrid(m);
   zones.support.sampleSpacing = medianEdgeLength(m);
-  if (opt.maxSourceOffPlaneSpacings > 0) measureOffPlane(m, zones);
   report.filters = markZoneChamfers(m, labels, zones, opt.sameRegionFeatureAngleRad);
 }
 
@@ -63,17 +55,12 @@ std::vector<char> sourcesOfMovedVertices(const VertexMoves<MeshType> &moves) {
 }
 
 /// After the paper's placement: the zone vertices next to a restored sharp
-/// edge move onto their region's plane, then the opt-in sampling-grid guard
-/// sends back the moves that sweep over a grid node the sampler saw on the
-/// other side.
+/// edge move onto their region's plane.
 template <class MeshType>
 void refineExtendedPlacement(MeshType &m, VertexMoves<MeshType> &moves, const FeatureZones &zones,
                              const SharpenOptions &opt, SharpenReport &report) {
   projectZoneVertices(m, zones, moves.firstInserted(), sourcesOfMovedVertices(moves), opt,
                       report.extended);
-  if (!opt.samplingGridGuard) return;
-  report.grid = revertGridContradictions(m, moves, zones.samplingGrid, opt.gridSweepToleranceCells);
-  revertBlendedFeatures(moves, zones.support.region, opt.gridBlendedFeatureFraction, report.grid);
 }
 
 }  // namespace edge_sharpener

@@ -44,12 +44,10 @@ enum class Placement : std::uint8_t {
                        ///< allows, or than maxDisplacementSpacings sample spacings
   CurvedSupport,       ///< extended method: the regions curve like a blend, not a sharp edge
   IntersectionRevert,  ///< moved back: a face of it intersected another face
-  OffPlaneSource,      ///< extended method, strict guard: a source vertex lies off its plane
-  GridRevert,    ///< extended method: moved back, it swept over a node of the input's sampling grid
-  WeakEvidence,  ///< auto method: moved back with its whole feature, too many of whose
-                 ///< vertices the other tests refused (feature_evidence.h)
+  WeakEvidence,        ///< auto method: moved back with its whole feature, too many of whose
+                       ///< vertices the other tests refused (feature_evidence.h)
 };
-constexpr int kPlacementCount = 14;
+constexpr int kPlacementCount = 12;
 
 const char *toString(Placement p);
 
@@ -65,9 +63,7 @@ inline const char *toString(Placement p) {
     case Placement::DegenerateRevert: return "degenerate_revert";
     case Placement::FarFromChamfer: return "far_from_chamfer";
     case Placement::CurvedSupport: return "curved_support";
-    case Placement::OffPlaneSource: return "off_plane_source";
     case Placement::IntersectionRevert: return "intersection_revert";
-    case Placement::GridRevert: return "grid_revert";
     case Placement::WeakEvidence: return "weak_evidence";
   }
   return "unknown";

@@ -21,14 +21,7 @@ enum class OptionType { Flag, Integer, Real, Choice };
 
 /// Who sets the option. `Ordinary` options are what users see first (CLI
 /// help, MeshLab dialog, Blender panel); the others are one method's tuning.
-enum class OptionGroup {
-  Ordinary,
-  PaperTuning,
-  ExtendedTuning,
-  EvidenceGuard,
-  StrictGuard,
-  GridGuard
-};
+enum class OptionGroup { Ordinary, PaperTuning, ExtendedTuning, EvidenceGuard };
 
 inline const char *toString(OptionGroup g) {
   switch (g) {
@@ -36,8 +29,6 @@ inline const char *toString(OptionGroup g) {
     case OptionGroup::PaperTuning: return "Paper method tuning";
     case OptionGroup::ExtendedTuning: return "Extended method tuning";
     case OptionGroup::EvidenceGuard: return "Auto method: evidence guard";
-    case OptionGroup::StrictGuard: return "Extended method: strict plane guard";
-    case OptionGroup::GridGuard: return "Extended method: sampling-grid guard";
   }
   return "";
 }
@@ -102,8 +93,8 @@ inline double radians(double deg) {
   [](const SharpenOptions &o) { return detail::degrees(o.field); }, \
       [](SharpenOptions &o, double v) { o.field = detail::radians(v); }
 
-/// Every option, ordinary ones first; within a group, the order in which
-/// they are applied (the strict preset before the settings it presets).
+/// Every option, ordinary ones first, then each method's tuning; options are
+/// applied in this order.
 // One row per option (clang-format would put each field on a line of its own).
 // clang-format off
 inline const std::vector<OptionSpec> &optionTable() {
@@ -283,51 +274,6 @@ inline const std::vector<OptionSpec> &optionTable() {
        "Auto method: a feature with fewer new vertices than this stays as it was.",
        T::Integer, G::EvidenceGuard, "vertices", 0, 1000, false, kNotInMeshLab, {}, {},
        ES_INT(minFeatureVertices)},
-      // ----- extended method, strict plane guard (the preset first)
-      {"strict", "--strict", "strictPlaneGuard", "Strict plane guard (extended)",
-       "Extended method only. Region faces next to the feature zone that turn away from their "
-       "region's plane return to the zone, the planes are fitted around the flat faces away "
-       "from the zone, and an inserted vertex stays at rest when a vertex it comes from lies "
-       "more than 0.3 median edge lengths off its plane. Keeps blends and finely facetted "
-       "curves rounded, but also leaves the wide bevels of coarse remeshings and the tips of "
-       "acute corners chamfered.",
-       T::Flag, G::StrictGuard, "", 0, 1, false, kBoth, {}, {},
-       [](const SharpenOptions &o) { return o.maxSourceOffPlaneSpacings > 0 ? 1.0 : 0.0; },
-       [](SharpenOptions &o, double v) { o.setStrictPlaneGuard(v != 0); }},
-      {"border_turn_threshold_factor", "--border-turn", "", "Border turn",
-       "Return to the zone the region faces next to it that turn from their region's plane by "
-       "more than this multiple of the smooth threshold (0: off; strict: 1).",
-       T::Real, G::StrictGuard, "x smooth threshold", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(borderTurnThresholdFactor)},
-      {"max_source_off_plane_spacings", "--max-off-plane", "", "Maximum off-plane distance",
-       "Keep a vertex at rest when a source vertex lies farther than this many median edge "
-       "lengths from its plane (0: off; strict: 0.3).",
-       T::Real, G::StrictGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxSourceOffPlaneSpacings)},
-      {"fit_seed_flat_angle_deg", "--fit-seed-flat-angle", "", "Flat seed angle",
-       "Fit a region's plane near the zone around its faces away from the zone when those turn "
-       "by at most this angle (0: off; strict: 4).",
-       T::Real, G::StrictGuard, "deg", 0, 90, false, kNotInMeshLab, {}, {},
-       ES_ANGLE(fitSeedFlatAngleRad)},
-      // ----- extended method, sampling-grid guard
-      {"sampling_grid_guard", "--grid-guard", "samplingGridGuard", "Sampling-grid guard (extended)",
-       "Extended method only. When the input was made by marching cubes (its vertices lie on "
-       "the edges of an axis-aligned grid, which is detected), a new vertex goes back to rest "
-       "when sharpening would sweep the surface over a grid node that the sampler saw on the "
-       "other side (a blend or a bevel hardly larger than a cell); when a tenth of the moves "
-       "between two regions go back so, the rest of them follow. For resamplings of exact "
-       "shapes (Uniform Mesh Resampling); not for reconstructions (Screened Poisson), whose "
-       "grid holds a smoothed surface.",
-       T::Flag, G::GridGuard, "", 0, 1, false, kInSharpen, {}, {}, ES_FLAG(samplingGridGuard)},
-      {"grid_sweep_tolerance_cells", "--grid-tolerance", "", "Grid tolerance",
-       "A node counts as swept when it lies this many cells past the moved face.",
-       T::Real, G::GridGuard, "cells", 0, 10, false, kNotInMeshLab, {}, {},
-       ES_REAL(gridSweepToleranceCells)},
-      {"grid_blended_feature_fraction", "--grid-blended-fraction", "", "Grid blended fraction",
-       "When this fraction of the moves between two regions went back, the rest of them go "
-       "back too (a blend, not a sharp edge; 0: off).",
-       T::Real, G::GridGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
-       ES_REAL(gridBlendedFeatureFraction)},
   };
   return table;
 }

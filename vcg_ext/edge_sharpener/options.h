@@ -132,25 +132,6 @@ struct SharpenOptions {
   /// faces of the chamfer. 0: no refit.
   double fitTrimAngleRad = 15.0 * M_PI / 180.0;
 
-  /// Send a moved vertex back to rest when one of its faces sweeps over a
-  /// node of the input's sampling grid, when the input has one (marching
-  /// cubes: sampling_grid.h): the sampler saw that node on the other side of
-  /// the surface, so the sharp edge is not there (a blend or a bevel hardly
-  /// larger than a cell). Off by default: it assumes the grid holds the
-  /// signs of the true solid (a resampling such as MeshLab's Uniform Mesh
-  /// Resampling), while a reconstruction's grid (Screened Poisson) holds
-  /// those of a smoothed function, where it keeps real features rounded.
-  bool samplingGridGuard = false;
-  /// ...by more than this many cells past the moved face (plane fits of a
-  /// truly sharp edge graze nodes by a few thousandths of a cell).
-  double gridSweepToleranceCells = 0.03;
-  /// ...and when at least this fraction of the moves between two regions
-  /// went back so, the rest of them go back too (a feature is blended or
-  /// sharp along its length; the nodes witness only where they happen to
-  /// fall). 0 disables. On the exact sharp shapes nothing goes back, so any
-  /// small fraction separates; 0.1 leaves room for a stray witness.
-  double gridBlendedFeatureFraction = 0.1;
-
   // --- Auto method: the evidence guard (feature_evidence.h) ---
 
   /// Nothing is sharpened when the tests refused more than this fraction of
@@ -170,39 +151,6 @@ struct SharpenOptions {
   /// faces around them is below this fraction of their length (a model
   /// already sharp).
   double minMedianLift = 0.07;
-
-  // --- Extended method, strict plane guard (off by default; `--strict`) ---
-
-  /// Before zone labelling, region faces touching the zone whose normal turns
-  /// from their region's plane fitted there by more than this multiple of the
-  /// smooth-edge threshold return to the zone (feature_zones.h:
-  /// returnTurnedBorderFaces): a strip of chamfer faces that grew into a
-  /// region tilts its plane. 0 disables (default); the strict setting is 1.
-  double borderTurnThresholdFactor = 0.0;
-  /// An inserted vertex stays at rest when one of its source vertices lies
-  /// farther from its plane than this many sample spacings (the input's
-  /// median edge length): the plane does not describe the surface that vertex
-  /// samples (a blend or finely facetted curve, a face hardly wider than the
-  /// sampling). 0 disables (default); the strict setting is 0.3. It also
-  /// keeps the wide bevels of coarse remeshings and the truncated tips of
-  /// acute corners at rest, which is why it is not on by default.
-  double maxSourceOffPlaneSpacings = 0.0;
-  /// A region's plane near the zone is trimmed around the mean normal of its
-  /// fitted faces that touch no zone vertex, when those turn by at most this
-  /// angle (radians; they are flat): the faces next to the zone may be a strip
-  /// of the chamfer the region absorbed (feature_zones.h: fitRegionPlane).
-  /// 0 disables (default); the strict setting is 4 degrees.
-  double fitSeedFlatAngleRad = 0.0;
-
-  /// The strict plane guard: the three settings above at their strict values.
-  void setStrictPlaneGuard(bool on) {
-    borderTurnThresholdFactor = on ? kStrictBorderTurnThresholdFactor : 0.0;
-    maxSourceOffPlaneSpacings = on ? kStrictMaxSourceOffPlaneSpacings : 0.0;
-    fitSeedFlatAngleRad = on ? kStrictFitSeedFlatAngleRad : 0.0;
-  }
-  static constexpr double kStrictBorderTurnThresholdFactor = 1.0;
-  static constexpr double kStrictMaxSourceOffPlaneSpacings = 0.3;
-  static constexpr double kStrictFitSeedFlatAngleRad = 4.0 * M_PI / 180.0;
 
   /// The 2003 method exactly as published, every other option at its default.
   static SharpenOptions paperMethod() {

@@ -88,9 +88,6 @@ struct SupportPlanes {
   /// Extended method: the input's sample spacing (median edge length);
   /// 0 for the paper's method.
   double sampleSpacing = 0;
-  /// Extended method with the strict plane guard: each vertex's distance
-  /// from its own plane; empty otherwise.
-  std::vector<double> offPlane;
 
   /// n vertices without a plane.
   void reset(std::size_t n) {
@@ -316,18 +313,6 @@ inline Verdict displacementTooLarge(const InsertedVertexSource &src, const Suppo
   return std::nullopt;
 }
 
-/// Strict plane guard: a source the plane does not describe — the planes'
-/// edge is not where the samples around it put the surface (a blend, a
-/// facetted curve).
-inline Verdict sourceOffItsPlane(const InsertedVertexSource &src, const SupportPlanes &support,
-                                 const SharpenOptions &opt) {
-  if (support.offPlane.empty() || !(opt.maxSourceOffPlaneSpacings > 0)) return std::nullopt;
-  const double limit = opt.maxSourceOffPlaneSpacings * support.sampleSpacing;
-  for (int i = 0; i < src.originalCount; ++i)
-    if (support.offPlane[src.original[i]] > limit) return Placement::OffPlaneSource;
-  return std::nullopt;
-}
-
 /// The vetoes that need the paper's target, in the order they are tried.
 inline Verdict anyAtTarget(const InsertedVertexSource &src, const Plane *planes,
                            const SupportPlanes &support, const SharpenOptions &opt,
@@ -335,8 +320,7 @@ inline Verdict anyAtTarget(const InsertedVertexSource &src, const Plane *planes,
   if (Verdict v = flankBendsAway(src, planes, support, opt, target)) return v;
   if (Verdict v = passesIntermediateRegion(src, planes, support, opt, target)) return v;
   if (Verdict v = apexTooHigh(src, planes, opt, target)) return v;
-  if (Verdict v = displacementTooLarge(src, support, opt, target)) return v;
-  return sourceOffItsPlane(src, support, opt);
+  return displacementTooLarge(src, support, opt, target);
 }
 
 }  // namespace veto

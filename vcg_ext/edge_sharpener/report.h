@@ -78,20 +78,6 @@ struct IntersectionStats {
   std::size_t remaining = 0;          ///< intersecting pairs left alone: they intersect at rest too
 };
 
-/// Stage 5b, extended method: moved vertices sent back to rest because their
-/// faces swept over a node of the input's sampling grid (sampling_grid.h).
-struct GridGuardStats {
-  bool gridFound = false;           ///< the input lies on an axis-aligned sampling grid
-  double step = 0;                  ///< its smallest cell size
-  std::size_t nodesTested = 0;      ///< sampled grid nodes in the swept volumes, first round
-  std::size_t sweepingFaces = 0;    ///< moved faces that swept over such a node, first round
-  std::size_t reverted = 0;         ///< inserted vertices sent back to rest
-  std::size_t zoneReverted = 0;     ///< projected zone vertices sent back to rest
-  std::size_t rounds = 0;           ///< rounds that found a swept node
-  std::size_t blendedFeatures = 0;  ///< region pairs whose moves went back as a whole
-  std::size_t featureReverted = 0;  ///< of `reverted`, those sent back with their feature
-};
-
 /// Stage 6c, auto method: features sent back whole for weak evidence
 /// (feature_evidence.h).
 struct EvidenceStats {
@@ -111,7 +97,6 @@ struct ExtendedStats {
   std::size_t corridors = 0;             ///< thin smooth regions returned to the zone
   std::size_t openedContacts = 0;        ///< region faces returned to the zone at region contacts
   std::size_t openedCreases = 0;         ///< region faces returned to the zone at internal creases
-  std::size_t returnedBorderFaces = 0;   ///< border faces turned from their region's plane (strict)
   std::size_t zoneFaces = 0;             ///< faces outside every region
   std::size_t zoneVertices = 0;          ///< vertices outside every region
   std::size_t labelledZoneVertices = 0;  ///< zone vertices given a region label
@@ -130,7 +115,6 @@ struct SharpenReport {
   PlacementStats placement;
   CleanupStats cleanup;
   IntersectionStats intersections;
-  GridGuardStats grid;         ///< extended method with SharpenOptions::samplingGridGuard
   bool evidenceGuard = false;  ///< the auto method's evidence guard ran
   EvidenceStats evidence;
   bool extendedMethod = false;
@@ -157,10 +141,8 @@ inline void formatFeatureZones(std::ostream &s, const SharpenReport &r) {
   const ExtendedStats &e = r.extended;
   s << "feature zones: " << e.regions << " smooth regions (" << e.corridors
     << " corridors dissolved), " << e.zoneFaces << " zone faces (" << e.openedContacts
-    << " opened at region contacts, " << e.openedCreases << " at internal creases";
-  if (e.returnedBorderFaces > 0)
-    s << ", " << e.returnedBorderFaces << " turned from their region's plane";
-  s << "), " << e.labelledZoneVertices << " of " << e.zoneVertices << " zone vertices labelled";
+    << " opened at region contacts, " << e.openedCreases << " at internal creases), "
+    << e.labelledZoneVertices << " of " << e.zoneVertices << " zone vertices labelled";
   if (r.geometryChanged)
     s << ", " << e.projectedVertices << " projected onto their region (max " << e.maxProjection
       << ", " << e.projectionsRejected << " refused)";
@@ -181,19 +163,6 @@ inline void formatPlacement(std::ostream &s, const SharpenReport &r) {
     s << "; " << toString(p) << " " << r.placement.byOutcome[i];
   }
   s << "\n";
-}
-
-inline void formatGridGuard(std::ostream &s, const GridGuardStats &g) {
-  s << "sampling grid: ";
-  if (!g.gridFound) {
-    s << "none found (guard off)\n";
-    return;
-  }
-  s << "axis-aligned, cell " << g.step << "; " << g.sweepingFaces
-    << " moved faces swept over a sampled node, " << g.reverted << " inserted and "
-    << g.zoneReverted << " zone vertices sent back (" << g.rounds << " rounds); "
-    << g.blendedFeatures << " blended features (" << g.featureReverted
-    << " of those inserted vertices sent back with their feature)\n";
 }
 
 inline void formatGuards(std::ostream &s, const SharpenReport &r) {
@@ -228,7 +197,6 @@ inline std::string formatReport(const SharpenReport &r) {
   if (r.extendedMethod) detail::formatFeatureZones(s, r);
   if (!r.geometryChanged) return s.str();
   detail::formatPlacement(s, r);
-  if (r.extendedMethod) detail::formatGridGuard(s, r.grid);
   detail::formatGuards(s, r);
   s << "output: " << r.outputVertices << " vertices, " << r.outputFaces << " faces\n";
   return s.str();

@@ -1,7 +1,6 @@
 // Extended method: the plane of a region near one vertex (fitted to the
 // region's faces within a few rings, trimmed of the chamfer faces it
-// absorbed), and what placement's strict plane guard reads beside it: the
-// sample spacing and how far each vertex lies off its plane.
+// absorbed), and the input's sample spacing.
 #pragma once
 
 #include <algorithm>
@@ -20,19 +19,13 @@ namespace edge_sharpener {
 /// (placement.h: SupportFit).
 using RegionPlaneFit = SupportFit;
 
-/// How fitRegionPlane() fits: face rings, trim angle, and (strict plane
-/// guard) the seed away from the zone.
+/// How fitRegionPlane() fits: face rings and trim angle.
 struct PlaneFitSettings {
   int rings = 2;       ///< SharpenOptions::supportRings
   double trimRad = 0;  ///< SharpenOptions::fitTrimAngleRad
-  /// SharpenOptions::fitSeedFlatAngleRad (0: off); needs `nearZone`.
-  double seedFlatRad = 0;
-  /// Per vertex: 1 when it has a zone face; null when not seeding.
-  const std::vector<char> *nearZone = nullptr;
 
-  static PlaneFitSettings from(const SharpenOptions &opt, const std::vector<char> &nearZone) {
-    return {opt.supportRings, opt.fitTrimAngleRad, opt.fitSeedFlatAngleRad,
-            opt.fitSeedFlatAngleRad > 0 ? &nearZone : nullptr};
+  static PlaneFitSettings from(const SharpenOptions &opt) {
+    return {opt.supportRings, opt.fitTrimAngleRad};
   }
 };
 
@@ -51,12 +44,10 @@ std::vector<char> verticesTouchingZone(const MeshType &m, const VertexFaceTable 
 
 namespace detail {
 
-/// A face of a region plane fit: unit normal, centroid, area, and whether no
-/// vertex of it touches the zone.
+/// A face of a region plane fit: unit normal, centroid, area.
 struct FittedFace {
   Vec3 normal, centroid;
   double area;
-  bool awayFromZone;
 };
 
 /// The faces of region `r` within `s.rings` face rings of v, with their
@@ -86,9 +77,7 @@ RegionFaces collectRegionFaces(const MeshType &m, const VertexFaceTable &vf,
         const Vec3 n = (p1 - p0) ^ (p2 - p0);  // twice the area times the unit normal
         const double area = n.Norm();
         out.normalSum += n;
-        bool away = s.nearZone != nullptr;
-        for (int k = 0; k < 3 && away; ++k) away = !(*s.nearZone)[vcg::tri::Index(m, f.cV(k))];
-        if (area > 0) out.faces.push_back(FittedFace{n / area, (p0 + p1 + p2) / 3.0, area, away});
+        if (area > 0) out.faces.push_back(FittedFace{n / area, (p0 + p1 + p2) / 3.0, area});
         out.centroidSum += (p0 + p1 + p2) * (area / 3.0);
         out.areaSum += area;
         for (int k = 0; k < 3; ++k) next.push_back(vcg::tri::Index(m, f.cV(k)));
@@ -96,20 +85,6 @@ RegionFaces collectRegionFaces(const MeshType &m, const VertexFaceTable &vf,
     frontier.swap(next);
   }
   return out;
-}
-
-/// The mean normal of the faces away from the zone when those turn from it
-/// by at most `flatRad` (the faces next to the zone may be a strip of the
-/// chamfer the region absorbed); else `normal` unchanged.
-inline Vec3 seedAwayFromZone(const std::vector<FittedFace> &faces, const Vec3 &normal,
-                             double flatRad) {
-  Vec3 awaySum(0, 0, 0);
-  for (const FittedFace &f : faces)
-    if (f.awayFromZone) awaySum += f.normal * f.area;
-  bool flat = awaySum.Norm() > 0;
-  for (const FittedFace &f : faces)
-    flat = flat && (!f.awayFromZone || angleBetween(awaySum, f.normal) <= flatRad);
-  return flat ? awaySum / awaySum.Norm() : normal;
 }
 
 /// Refits the plane without the faces more than `trimRad` away from its
@@ -155,10 +130,7 @@ inline void measureSpread(const std::vector<FittedFace> &faces, double areaSum,
 /// `s.rings` face rings of v (zero normal when v touches no face of r),
 /// refitted without the faces more than `s.trimRad` away from that normal (0:
 /// no refit), with the spread of the fitted faces around it (placement reads
-/// it to tell a curved region from a flat one). With `s.seedFlatRad`, the
-/// trim is centred on the mean normal of the fitted faces that touch no zone
-/// vertex when those turn by at most that angle: the faces next to the zone
-/// may be a strip of the chamfer the region absorbed.
+/// it to tell a curved region from a flat one).
 template <class MeshType>
 RegionPlaneFit fitRegionPlane(const MeshType &m, const VertexFaceTable &vf,
                               const FeatureZones &zones, std::size_t v, int r,
@@ -170,8 +142,6 @@ RegionPlaneFit fitRegionPlane(const MeshType &m, const VertexFaceTable &vf,
   const double len = collected.normalSum.Norm();
   if (!(collected.areaSum > 0) || !(len > 0)) return fit;
   fit.plane = Plane{collected.centroidSum / collected.areaSum, collected.normalSum / len};
-  if (s.seedFlatRad > 0)
-    fit.plane.normal = detail::seedAwayFromZone(collected.faces, fit.plane.normal, s.seedFlatRad);
   if (s.trimRad > 0) detail::trimTurnedFaces(collected, s.trimRad, fit.plane);
   detail::measureSpread(collected.faces, collected.areaSum, fit);
   return fit;
@@ -223,20 +193,6 @@ double medianEdgeLength(const MeshType &m) {
       if ((bitsOf(x) >> 16) == bucket) inBucket.push_back(x);
   std::nth_element(inBucket.begin(), inBucket.begin() + rank, inBucket.end());
   return inBucket[rank];
-}
-
-/// Fills zones.support.offPlane: how far each labelled vertex lies from its
-/// own plane, which placement reads for the strict plane guard
-/// (SharpenOptions::maxSourceOffPlaneSpacings). \pre labelZoneVertices() ran.
-template <class MeshType>
-void measureOffPlane(const MeshType &m, FeatureZones &zones) {
-  auto &support = zones.support;
-  support.offPlane.assign(m.vert.size(), 0.0);
-  for (std::size_t v = 0; v < m.vert.size(); ++v) {
-    const Plane &pl = support.plane(v);
-    if (pl.normal.SquaredNorm() > 0)
-      support.offPlane[v] = std::abs(pl.normal * (positionOf(&m.vert[v]) - pl.point));
-  }
 }
 
 }  // namespace edge_sharpener

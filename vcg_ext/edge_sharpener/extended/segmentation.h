@@ -1,7 +1,7 @@
 // Extended method, detection: the smooth part split into regions (the
 // paper's "global approach": triangles connected through smooth edges), and
 // the regions' faces that belong to the feature zone returned to it:
-// corridors, region contacts, internal creases, turned border faces.
+// corridors, region contacts, internal creases.
 #pragma once
 
 #include <algorithm>
@@ -10,11 +10,9 @@
 #include <vector>
 
 #include "../filters.h"
-#include "../options.h"
 #include "../report.h"
 #include "../util/mesh_labels.h"
 #include "../util/parallel.h"
-#include "plane_fit.h"
 #include "zones.h"
 
 namespace edge_sharpener {
@@ -273,71 +271,6 @@ std::size_t openInternalCreases(const MeshType &m, const MeshLabels<MeshType> &l
   for (const auto &ends : found)
     for (const std::uint32_t v : ends.value) crease[v] = 1;
   return openFacesAround(vf, crease, zones);
-}
-
-/// Returns to the zone the region faces around the zone's border that turn
-/// away from their region's plane, fitted there as labelZoneVertices() fits
-/// it, by more than `maxTurnRad`: a strip of chamfer faces whose edges passed
-/// the smooth test grew into the region and tilts the plane fitted across it.
-/// Every fit reads the regions as they were before this stage (one ring of
-/// faces is returned, never more).
-/// \pre segmentRegions() ran (and the opening stages, when enabled).
-/// \return the number of faces returned to the zone.
-template <class MeshType>
-std::size_t returnTurnedBorderFaces(const MeshType &m, const MeshLabels<MeshType> &labels,
-                                    const VertexFaceTable &vf, const SharpenOptions &opt,
-                                    double maxTurnRad, FeatureZones &zones) {
-  const std::vector<char> touchesZone = verticesTouchingZone(m, vf, zones);
-  const PlaneFitSettings fitSettings = PlaneFitSettings::from(opt, touchesZone);
-  std::vector<std::uint32_t> border;
-  for (std::size_t v = 0; v < m.vert.size(); ++v)
-    if (touchesZone[v]) border.push_back(std::uint32_t(v));
-  // Every fit reads the regions as they are before this stage, so the border
-  // vertices are independent: on every core, each thread with its own visit
-  // stamps and its own list of turned faces.
-  const std::int64_t count = std::int64_t(border.size());
-  const int threads = count >= 256 ? detail::maxThreads() : 1;
-  std::vector<std::vector<int>> stamps(threads);
-  std::vector<detail::PerThread<std::vector<std::uint32_t>>> turnedBy(threads);
-#pragma omp parallel num_threads(threads)
-  {
-    const int t = detail::threadNumber();
-    std::vector<int> &stamp = stamps[t];
-    int stampValue = 0;  // one per fit of this thread
-    std::vector<int> regionsAtVertex;
-#pragma omp for schedule(dynamic, 64)
-    for (std::int64_t k = 0; k < count; ++k) {
-      if (stamp.empty()) stamp.assign(m.face.size(), -1);
-      const std::size_t v = border[k];
-      regionsAtVertex.clear();
-      for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
-        const int r = zones.faceRegion[*fi];
-        if (r != kZone &&
-            std::find(regionsAtVertex.begin(), regionsAtVertex.end(), r) == regionsAtVertex.end())
-          regionsAtVertex.push_back(r);
-      }
-      for (std::size_t i = 0; i < regionsAtVertex.size(); ++i) {
-        const int r = regionsAtVertex[i];
-        const RegionPlaneFit fit =
-            fitRegionPlane(m, vf, zones, v, r, fitSettings, stamp, stampValue++);
-        if (fit.plane.normal.SquaredNorm() == 0) continue;
-        for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
-          if (zones.faceRegion[*fi] == r &&
-              angleBetween(labels.normal[&m.face[*fi]], fit.plane.normal) > maxTurnRad)
-            turnedBy[t].value.push_back(*fi);
-      }
-    }
-  }
-  std::vector<char> turned(m.face.size(), 0);
-  for (const auto &list : turnedBy)
-    for (const std::uint32_t f : list.value) turned[f] = 1;
-  std::size_t returned = 0;
-  for (std::size_t f = 0; f < turned.size(); ++f)
-    if (turned[f]) {
-      zones.faceRegion[f] = kZone;
-      ++returned;
-    }
-  return returned;
 }
 
 }  // namespace edge_sharpener

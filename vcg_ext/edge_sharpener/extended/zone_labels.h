@@ -247,7 +247,7 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
     if (!zones.inRegion[v] && vf.degree(v) > 0) zone.push_back(std::uint32_t(v));
   }
   stats.zoneVertices += zone.size();
-  detail::fitPlanesAtZone(m, vf, fitted, PlaneFitSettings::from(opt, touchesZone), zones);
+  detail::fitPlanesAtZone(m, vf, fitted, PlaneFitSettings::from(opt), zones);
   const detail::ZoneCandidates cand = detail::offerRegions(m, vf, opt, zones, fitted, zone);
   detail::labelByNearestPlane(m, zone, cand, zones, stats);
   collectNearbyRegions(m, vf, zones, opt.supportRings);

@@ -2,10 +2,12 @@
 // to, and the label and plane of each vertex (feature_zones.h: the stages).
 #pragma once
 
+#include <vcg/complex/complex.h>
+
 #include <cstdint>
 #include <vector>
+// (vcglib's algorithm headers, included below, need complex.h first)
 
-#include "../guards/sampling_grid.h"
 #include "../placement.h"
 #include "../util/geometry.h"
 #include "../util/vertex_faces.h"
@@ -22,7 +24,6 @@ struct FeatureZones {
   std::vector<char> inRegion;    ///< 1: a vertex of some region's face (never moves)
   SupportPlanes support;         ///< plane of the label's region near the vertex
   VertexFaceTable inputFaces;    ///< faces of each vertex, as detection saw them
-  SamplingGrid samplingGrid;     ///< the input's marching-cubes grid, if it has one
 };
 
 namespace detail {

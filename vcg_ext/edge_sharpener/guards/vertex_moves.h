@@ -2,7 +2,7 @@
 // it is away from it, and one way back (sendBack). Placement moves the
 // inserted vertices, the extended method's zone projection moves original
 // vertices of the feature zone; every guard that undoes a move (degenerate
-// cleanup, sampling-grid guard, intersection guard) goes through here, and
+// cleanup, intersection guard, evidence guard) goes through here, and
 // the outcomes are counted once, at the end (countOutcomes).
 #pragma once
 
