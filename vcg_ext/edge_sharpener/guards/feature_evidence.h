@@ -4,13 +4,14 @@
 // corner vertices. Along a real sharp edge of a remeshed solid, placement's
 // tests agree (the paper's degenerate cases, the extended method's vetoes)
 // and the samples beside the edge lie on the planes its flanks extrapolate.
-// Where many of the tests refuse, or the samples lie off the planes, the
+// Where many of the tests refuse, or a sample lies far off its plane, the
 // flanks are not what placement assumed (a blend, a curved face, a thin
 // wall), and the moves the tests let through are the least trustworthy: the
 // feature stays as it was (do no harm), as does one too short to be a
 // feature. Where the tests refuse a large part of all the moves, the input
 // is not a chamfered sampling of sharp edges at all (a depth scan's fused
-// surface, a model already sharp) and nothing moves.
+// surface), and where the moves mostly slide along the input instead of
+// lifting it to an edge, the input is already sharp: nothing moves.
 #pragma once
 
 #include <vcg/complex/complex.h>
