@@ -98,7 +98,8 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"refused_fraction", r.evidence.refusedFraction},
                      {"median_lift", r.evidence.medianLift},
                      {"whole_mesh_left", r.evidence.wholeMeshLeft},
-                     {"faces_given_back", r.evidence.facesGivenBack}};
+                     {"faces_given_back", r.evidence.facesGivenBack},
+                     {"resting_vertices_removed", r.evidence.restingVerticesRemoved}};
   return j;
 }
 

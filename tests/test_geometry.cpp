@@ -260,3 +260,15 @@ TEST(TrianglesApart, CrossingOverlappingAndTouchingAreNotApart) {
   EXPECT_FALSE(es::trianglesApart(touching, flat));
   EXPECT_TRUE(es::trianglesApart(flat, above));
 }
+
+TEST(LiesOnSegment, OnItUpToFloatRoundingOnly) {
+  const Vec3 a(100, 0, 0), b(101, 1, 0);
+  EXPECT_TRUE(es::liesOnSegment(Vec3(100.5, 0.5, 0), a, b));
+  EXPECT_TRUE(es::liesOnSegment(a, a, b));
+  // A float's rounding off the segment, at coordinates near 100.
+  const Vec3 rounded(Vec3::Construct(vcg::Point3f(100.3f, 0.3f, 0.f)));
+  EXPECT_TRUE(es::liesOnSegment(rounded, a, b));
+  EXPECT_FALSE(es::liesOnSegment(Vec3(100.5, 0.5, 0.001), a, b));  // off it
+  EXPECT_FALSE(es::liesOnSegment(Vec3(101.5, 1.5, 0), a, b));      // on the line, beyond b
+  EXPECT_FALSE(es::liesOnSegment(a, a, a));                        // no segment
+}

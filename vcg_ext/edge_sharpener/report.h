@@ -89,6 +89,7 @@ struct EvidenceStats {
   double medianLift = 1;           ///< how far the moves lift the surface, per unit of length
   bool wholeMeshLeft = false;      ///< too many refused, or too little lift: nothing sharpened
   std::size_t facesGivenBack = 0;  ///< split faces left at rest that got their input face back
+  std::size_t restingVerticesRemoved = 0;  ///< other inserted vertices at rest, merged away
 };
 
 /// Extended method: segmentation and zone labelling.
@@ -183,7 +184,8 @@ inline void formatGuards(std::ostream &s, const SharpenReport &r) {
       << int(std::lround(100 * r.evidence.refusedFraction)) << "% of the moves refused, "
       << "median lift " << std::lround(100 * r.evidence.medianLift) / 100.0
       << (r.evidence.wholeMeshLeft ? ": too little evidence, the mesh is left as it was" : "")
-      << "; " << r.evidence.facesGivenBack << " split faces at rest given back their input face\n";
+      << "; " << r.evidence.facesGivenBack << " split faces at rest given back their input face, "
+      << r.evidence.restingVerticesRemoved << " other inserted vertices at rest removed\n";
 }
 
 }  // namespace detail

@@ -161,9 +161,14 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
     report.intersections = {};
   }
   detail::countOutcomes(moves, report);
-  if (input) report.evidence.facesGivenBack = input->unsplitResting(m, moves);
+  if (input) {
+    report.evidence.facesGivenBack = input->unsplitResting(m, moves);
+    report.evidence.restingVerticesRemoved =
+        InputFaces<MeshType>::dissolveRestingEdgeVertices(m, moves);
+  }
   detail::finish(m, labels, opt, report);
-  if (report.evidence.facesGivenBack > 0) vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+  if (report.evidence.facesGivenBack > 0 || report.evidence.restingVerticesRemoved > 0)
+    vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
   return report;
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../subdivision.h"
+#include "../util/geometry.h"
 #include "../util/mesh_labels.h"
 #include "vertex_moves.h"
 
@@ -171,6 +172,80 @@ class InputFaces {
         if (!m.vert[v].IsD()) vcg::tri::Allocator<MeshType>::DeleteVertex(m, m.vert[v]);
     }
     return given;
+  }
+
+  /// Removes each inserted edge vertex that unsplitResting could not (a
+  /// split face beside it kept a moved vertex) where it and its input edge
+  /// (a, b) are at rest and, on each
+  /// side of its input edge (a, b), exactly two triangles (a, v, x) and
+  /// (v, b, x) hold it: these become (a, b, x), the same surface, as v lies
+  /// on the segment ab. Such a vertex adds nothing to the shape, and metrics
+  /// that sample vertices (MeshLab's Hausdorff filter) would count it twice.
+  /// Deletes (flags: compact, then rebuild FF adjacency).
+  /// \return the number of vertices removed.
+  static std::size_t dissolveRestingEdgeVertices(MeshType &m, const VertexMoves<MeshType> &moves) {
+    using FaceType = typename MeshType::FaceType;
+    using VertexType = typename MeshType::VertexType;
+    const SplitPlan &plan = moves.plan();
+    const std::size_t first = moves.firstInserted(), n = plan.inserted.size();
+    // v, a and b at rest, and v on the segment ab as rounded (checked below).
+    const auto resting = [&](std::size_t k) {
+      const InsertedVertexSource &s = plan.inserted[k];
+      return s.originalCount == 2 && !m.vert[first + k].IsD() && !moves.isMoved(first + k) &&
+             !moves.isMoved(s.original[0]) && !moves.isMoved(s.original[1]);
+    };
+    std::vector<std::vector<FaceType *>> around(n);
+    for (auto &f : m.face) {
+      if (f.IsD()) continue;
+      for (int j = 0; j < 3; ++j) {
+        const std::size_t v = vcg::tri::Index(m, f.V(j));
+        if (v >= first && v < first + n && resting(v - first)) around[v - first].push_back(&f);
+      }
+    }
+    std::size_t removed = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (around[k].size() != 4) continue;  // two triangles on each side, no border
+      VertexType *v = &m.vert[first + k];
+      VertexType *a = &m.vert[plan.inserted[k].original[0]];
+      VertexType *b = &m.vert[plan.inserted[k].original[1]];
+      struct Side {
+        VertexType *apex = nullptr;
+        FaceType *withA = nullptr, *withB = nullptr;
+      };
+      std::array<Side, 2> sides;
+      bool ok = true;
+      for (FaceType *f : around[k]) {
+        const int iv = f->V(0) == v ? 0 : f->V(1) == v ? 1 : 2;
+        VertexType *p = f->V((iv + 1) % 3), *q = f->V((iv + 2) % 3);
+        const bool hasA = p == a || q == a, hasB = p == b || q == b;
+        if (hasA == hasB) {
+          ok = false;
+          break;
+        }
+        VertexType *apex = (p == a || p == b) ? q : p;
+        Side *side = sides[0].apex == apex || !sides[0].apex ? &sides[0] : &sides[1];
+        if (side->apex && side->apex != apex) {
+          ok = false;
+          break;
+        }
+        side->apex = apex;
+        FaceType *&slot = hasA ? side->withA : side->withB;
+        ok = slot == nullptr;
+        slot = f;
+        if (!ok) break;
+      }
+      for (const Side &side : sides) ok = ok && side.withA && side.withB && side.apex != v;
+      if (!ok || !liesOnSegment(positionOf(v), positionOf(a), positionOf(b))) continue;
+      for (const Side &side : sides) {
+        // (v, b, x) -> (a, b, x): v lies between a and b, so the winding stays.
+        for (int j = 0; j < 3; ++j)
+          if (side.withB->V(j) == v) side.withB->V(j) = a;
+        vcg::tri::Allocator<MeshType>::DeleteFace(m, *side.withA);
+      }
+      vcg::tri::Allocator<MeshType>::DeleteVertex(m, *v);
+      ++removed;
+    }
+    return removed;
   }
 
  private:

@@ -202,6 +202,21 @@ inline double cornerAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
   return angleBetween(b - a, c - a);
 }
 
+/// Whether p lies on the segment ab, up to the rounding of single-precision
+/// coordinates (a mesh stores floats): then the triangles (a, p, x) and
+/// (p, b, x) cover exactly the triangle (a, b, x).
+inline bool liesOnSegment(const Vec3 &p, const Vec3 &a, const Vec3 &b) {
+  const Vec3 ab = b - a;
+  const double length2 = ab.SquaredNorm();
+  if (!(length2 > 0)) return false;
+  const double t = ((p - a) * ab) / length2;
+  double scale = std::sqrt(length2);
+  for (int i = 0; i < 3; ++i)
+    scale = std::max({scale, std::abs(a[i]), std::abs(b[i]), std::abs(p[i])});
+  const double tolerance = 4 * std::numeric_limits<float>::epsilon() * scale;
+  return t >= 0 && t <= 1 && (p - (a + ab * t)).Norm() <= tolerance;
+}
+
 /// Whether triangles p and q are apart by a visible gap along one of the
 /// separating-axis theorem's axes: the two normals, the nine cross products
 /// of their edges, each normal crossed with the edges of its own triangle
