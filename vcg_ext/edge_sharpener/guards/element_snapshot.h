@@ -194,17 +194,24 @@ class InputFaces {
       return s.originalCount == 2 && !m.vert[first + k].IsD() && !moves.isMoved(first + k) &&
              !moves.isMoved(s.original[0]) && !moves.isMoved(s.original[1]);
     };
-    std::vector<std::vector<FaceType *>> around(n);
+    // Each candidate's first five faces (a fifth disqualifies it).
+    std::vector<char> candidate(n);
+    for (std::size_t k = 0; k < n; ++k) candidate[k] = resting(k);
+    std::vector<std::uint8_t> count(n, 0);
+    std::vector<std::array<FaceType *, 4>> around(n);
+    const VertexType *firstInserted = m.vert.data() + first;
     for (auto &f : m.face) {
       if (f.IsD()) continue;
       for (int j = 0; j < 3; ++j) {
-        const std::size_t v = vcg::tri::Index(m, f.V(j));
-        if (v >= first && v < first + n && resting(v - first)) around[v - first].push_back(&f);
+        const std::size_t k = std::size_t(f.V(j) - firstInserted);  // wraps below first
+        if (k >= n || !candidate[k] || count[k] == 5) continue;
+        if (count[k] < 4) around[k][count[k]] = &f;
+        ++count[k];
       }
     }
     std::size_t removed = 0;
     for (std::size_t k = 0; k < n; ++k) {
-      if (around[k].size() != 4) continue;  // two triangles on each side, no border
+      if (count[k] != 4) continue;  // two triangles on each side, no border
       VertexType *v = &m.vert[first + k];
       VertexType *a = &m.vert[plan.inserted[k].original[0]];
       VertexType *b = &m.vert[plan.inserted[k].original[1]];
