@@ -140,9 +140,9 @@ class InputFaces {
       bool ok = true;
       for (std::size_t v : insertedOf(k)) {
         facesOf[v - n0].push_back(std::uint32_t(k));
-        ok = ok && !m.vert[v].IsD() && !moves.isMoved(v);
+        ok = ok && !m.vert[v].IsD() && moves.isAtRest(v);
       }
-      for (std::uint32_t v : triples_[plan.faces[k].face]) ok = ok && !moves.isMoved(v);
+      for (std::uint32_t v : triples_[plan.faces[k].face]) ok = ok && moves.isAtRest(v);
       for (std::size_t c = 0; ok && c < children[k].size(); ++c) {
         const auto &f = childAt(k, c);
         ok = !f.IsD();
@@ -191,8 +191,8 @@ class InputFaces {
     // v, a and b at rest, and v on the segment ab as rounded (checked below).
     const auto resting = [&](std::size_t k) {
       const InsertedVertexSource &s = plan.inserted[k];
-      return s.originalCount == 2 && !m.vert[first + k].IsD() && !moves.isMoved(first + k) &&
-             !moves.isMoved(s.original[0]) && !moves.isMoved(s.original[1]);
+      return s.originalCount == 2 && !m.vert[first + k].IsD() && moves.isAtRest(first + k) &&
+             moves.isAtRest(s.original[0]) && moves.isAtRest(s.original[1]);
     };
     // Each candidate's first five faces (a fifth disqualifies it).
     std::vector<char> candidate(n);

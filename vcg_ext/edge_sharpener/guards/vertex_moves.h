@@ -45,12 +45,19 @@ class VertexMoves {
     return v < firstInserted() ? originalsMayMove() : isInserted(v);
   }
 
-  /// Whether v is away from rest: an inserted vertex placed on its planes
-  /// (Placement::Moved), or an original vertex that zone projection moved.
+  /// Whether v is moved: an inserted vertex placed on its planes
+  /// (Placement::Moved; one the intersection guard took part of the way
+  /// back is not, though it is not at rest either: isAtRest), or an original
+  /// vertex that zone projection moved.
   bool isMoved(std::size_t v) const {
     if (v >= firstInserted()) return labels_.placement[&m_.vert[v]] == Placement::Moved;
     return originalsMayMove() && !(m_.vert[v].cP() == originalRest_[v]);
   }
+
+  /// Whether v is where it rests, by position: unlike !isMoved(v), false for
+  /// an inserted vertex the intersection guard moved only part of the way
+  /// back (Placement::IntersectionRevert). True for a vertex without a rest.
+  bool isAtRest(std::size_t v) const { return !hasRest(v) || m_.vert[v].cP() == storedRest(v); }
 
   /// v's rest position as the mesh stores it (an inserted vertex's midpoint
   /// rounded to the mesh's scalar). \pre hasRest(v).
