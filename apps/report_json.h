@@ -99,7 +99,9 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"median_lift", r.evidence.medianLift},
                      {"whole_mesh_left", r.evidence.wholeMeshLeft},
                      {"faces_given_back", r.evidence.facesGivenBack},
-                     {"resting_vertices_removed", r.evidence.restingVerticesRemoved}};
+                     {"resting_vertices_removed", r.evidence.restingVerticesRemoved},
+                     {"vertices_removed", r.evidence.verticesRemoved},
+                     {"faces_removed", r.evidence.facesRemoved}};
   return j;
 }
 

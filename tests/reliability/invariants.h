@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "edge_sharpener/util/mesh_types.h"
 #include "edge_sharpener/report.h"
+#include "edge_sharpener/util/mesh_types.h"
 
 namespace es_reliability {
 
@@ -134,9 +134,11 @@ std::string sharpenProblem(M &input, M &output, const edge_sharpener::SharpenRep
     return "report's input counts differ from the input";
   if (r.outputVertices != output.vert.size() || r.outputFaces != output.face.size())
     return "report's output counts differ from the output";
-  if (r.outputVertices != r.inputVertices + r.subdivision.insertedVertices - r.cleanup.collapses)
+  if (r.outputVertices != r.inputVertices + r.subdivision.insertedVertices - r.cleanup.collapses -
+                              r.evidence.verticesRemoved)
     return "vertex count arithmetic does not hold";
-  if (r.outputFaces != r.inputFaces + r.subdivision.addedFaces - r.cleanup.removedFaces)
+  if (r.outputFaces !=
+      r.inputFaces + r.subdivision.addedFaces - r.cleanup.removedFaces - r.evidence.facesRemoved)
     return "face count arithmetic does not hold";
   if (r.cleanup.remaining != 0)
     return "cleanup left " + std::to_string(r.cleanup.remaining) + " degenerate faces";

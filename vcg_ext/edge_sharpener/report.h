@@ -90,6 +90,8 @@ struct EvidenceStats {
   bool wholeMeshLeft = false;      ///< too many refused, or too little lift: nothing sharpened
   std::size_t facesGivenBack = 0;  ///< split faces left at rest that got their input face back
   std::size_t restingVerticesRemoved = 0;  ///< other inserted vertices at rest, merged away
+  std::size_t verticesRemoved = 0;         ///< inserted vertices deleted by the two above
+  std::size_t facesRemoved = 0;            ///< faces deleted by the two above
 };
 
 /// Extended method: segmentation and zone labelling.

@@ -163,13 +163,18 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   }
   detail::countOutcomes(moves, report);
   if (input) {
+    const int verticesBefore = m.vn, facesBefore = m.fn;
     report.evidence.facesGivenBack = input->unsplitResting(m, moves);
     report.evidence.restingVerticesRemoved =
         InputFaces<MeshType>::dissolveRestingEdgeVertices(m, moves);
+    report.evidence.verticesRemoved = std::size_t(verticesBefore - m.vn);
+    report.evidence.facesRemoved = std::size_t(facesBefore - m.fn);
+    // Before the compaction: it remaps adjacency, which must not name a
+    // deleted face (the project's build; vcglib's costs as much as the floor).
+    if (report.evidence.facesGivenBack > 0 || report.evidence.restingVerticesRemoved > 0)
+      buildFaceFace(m);
   }
   detail::finish(m, labels, opt, report);
-  if (report.evidence.facesGivenBack > 0 || report.evidence.restingVerticesRemoved > 0)
-    buildFaceFace(m);  // the project's own: vcglib's costs as much as the floor
   return report;
 }
 
