@@ -109,8 +109,8 @@ class InputFaces {
   /// Gives back its input face to every split face whose vertices all rest
   /// and whose children are as the split made them, when every split face
   /// sharing one of its inserted vertices can be given back too; deletes the
-  /// children and the inserted vertices (flags: compact, then rebuild FF
-  /// adjacency). \return the number of faces given back.
+  /// children and the inserted vertices by flag (rebuild FF adjacency, then
+  /// compact). \return the number of faces given back.
   std::size_t unsplitResting(MeshType &m, const VertexMoves<MeshType> &moves) const {
     const SplitPlan &plan = moves.plan();
     const std::size_t n0 = plan.originalVertexCount, count = plan.faces.size();
@@ -176,12 +176,12 @@ class InputFaces {
 
   /// Removes each inserted edge vertex that unsplitResting could not (a
   /// split face beside it kept a moved vertex) where it and its input edge
-  /// (a, b) are at rest and, on each
-  /// side of its input edge (a, b), exactly two triangles (a, v, x) and
-  /// (v, b, x) hold it: these become (a, b, x), the same surface, as v lies
-  /// on the segment ab. Such a vertex adds nothing to the shape, and metrics
-  /// that sample vertices (MeshLab's Hausdorff filter) would count it twice.
-  /// Deletes (flags: compact, then rebuild FF adjacency).
+  /// (a, b) are at rest and exactly two triangles (a, v, x) and (v, b, x)
+  /// hold it on each side: these become (a, b, x), the same surface, as v
+  /// lies on the segment ab. Such a vertex adds nothing to the shape, and
+  /// metrics that sample vertices (MeshLab's Hausdorff filter) would count
+  /// it twice. Deletes by flag: the caller rebuilds FF adjacency before it
+  /// compacts, so that no live face names a deleted one.
   /// \return the number of vertices removed.
   static std::size_t dissolveRestingEdgeVertices(MeshType &m, const VertexMoves<MeshType> &moves) {
     using FaceType = typename MeshType::FaceType;
