@@ -110,6 +110,61 @@ TEST(FeatureEvidence, WeakWhenShortRefusedOrOffItsPlanes) {
   EXPECT_TRUE(es::featureEvidenceIsWeak(feature(10, 10, 0.7), opt));
 }
 
+// A vertex whose target crosses to another sheet of the input counts as one
+// the other tests refused.
+TEST(FeatureEvidence, VerticesCrossingToAnotherSheetCountAsRefused) {
+  es::SharpenOptions opt;  // 20% refused
+  es::Feature f = feature(10, 10);
+  f.crossed = 2;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  f.crossed = 3;
+  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  f.moved = 9, f.crossed = 2;  // one refused, two crossed: 30%
+  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+}
+
+// An edge whose flanks meet at a shallow angle (a gentle crease, or a knife
+// edge) is weak; a corner is judged by its edges.
+TEST(FeatureEvidence, WeakWhereTheFlanksMeetAtAShallowAngle) {
+  es::SharpenOptions opt;  // 20 degrees
+  const double deg = M_PI / 180;
+  es::Feature f = feature(10, 10);
+  f.flankAngleRad = 19 * deg;
+  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  f.flankAngleRad = 21 * deg;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  es::Feature corner = feature(1, 1, 0, /*corner=*/true);
+  corner.flankAngleRad = 5 * deg;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(corner, opt));
+  opt.minFeatureAngleRad = 0;  // off
+  f.flankAngleRad = 1 * deg;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+}
+
+TEST(FeatureEvidence, PlanesMeetAtTheSmallerOfTheirAngles) {
+  const double deg = M_PI / 180;
+  const es::Vec3 up(0, 0, 1);
+  const auto turned = [&](double a) { return es::Vec3(std::sin(a * deg), 0, std::cos(a * deg)); };
+  EXPECT_NEAR(es::planeMeetingAngle(up, turned(10)), 10 * deg, 1e-9);   // shallow crease
+  EXPECT_NEAR(es::planeMeetingAngle(up, turned(90)), 90 * deg, 1e-9);   // right angle
+  EXPECT_NEAR(es::planeMeetingAngle(up, turned(170)), 10 * deg, 1e-9);  // knife edge
+  EXPECT_NEAR(es::planeMeetingAngle(up, up), 0.0, 1e-9);
+  EXPECT_NEAR(es::planeMeetingAngle(up, -up), 0.0, 1e-9);
+}
+
+// A target nearer the far side of a wall than its own surface has crossed
+// the wall's middle; a face turned less than 120 degrees from the own side
+// (the next flank at a corner) is not another sheet.
+TEST(FeatureEvidence, ATargetPastTheMiddleOfAWallCrossesToItsOtherSide) {
+  const es::Vec3 out(1, 0, 0), in(-1, 0, 0), side(0, 1, 0);
+  EXPECT_TRUE(es::crossesSheet(0.10, out, 0.05, in));
+  EXPECT_FALSE(es::crossesSheet(0.05, out, 0.10, in));  // not past the middle
+  EXPECT_FALSE(es::crossesSheet(0.10, out, 0.05, side));
+  EXPECT_FALSE(es::crossesSheet(0.10, out, 0.05, out));
+  const es::Vec3 turned110(std::cos(110 * M_PI / 180), std::sin(110 * M_PI / 180), 0);
+  EXPECT_FALSE(es::crossesSheet(0.10, out, 0.05, turned110));
+}
+
 TEST(FeatureEvidence, RefusedFractionCountsOnlyFeaturesThatMoved) {
   EXPECT_DOUBLE_EQ(es::refusedFraction({feature(10, 10), feature(10, 0)}), 0.0);
   EXPECT_DOUBLE_EQ(es::refusedFraction({feature(10, 5), feature(30, 30)}), 5.0 / 40.0);

@@ -46,11 +46,14 @@ int main(int argc, char **argv) {
     es::refineExtendedPlacement(m, moves, zones, opt, report);
     // The evidence as the guard sees it (before the cleanup); the harm after every guard.
     const es::InputSurface surface{zones.inputFaces, inputFaces.faceVertices()};
-    es::EvidenceGuard<es::Mesh> guard(m, moves, zones.support, surface, opt);
+    es::EvidenceGuard<es::Mesh> guard(m, moves, zones.support, surface, report.longestInputEdge,
+                                      opt);
     std::vector<es::Feature> features = guard.features();
     const std::vector<std::uint32_t> &featureOf = guard.featureOf();
     es::measureFeatures(m, moves, zones.support, featureOf, features);
     const std::vector<double> lifts = es::liftsOfMoves(m, moves, surface);
+    es::countSheetCrossings(m, moves, zones.support, lifts, featureOf, report.longestInputEdge,
+                            features);
     const auto weak = es::weakFeatures(plan, features, featureOf, es::medianLift(lifts), opt);
     const double refused = es::refusedFraction(features);
     // Median distance and lift of each feature's moves (distance in sample spacings).
@@ -105,10 +108,10 @@ int main(int argc, char **argv) {
           "\"vertices\": %zu, \"moved\": %zu, "
           "\"max_off_plane\": %.4f, \"median_displacement\": %.4f, "
           "\"median_lift\": %.4f, \"weak\": %d, \"harm_sum\": %.5f, \"harm_max\": %.5f, "
-          "\"before_sum\": %.5f}\n",
+          "\"before_sum\": %.5f, \"flank_angle_deg\": %.2f, \"crossed\": %zu}\n",
           name.c_str(), refused, es::medianLift(lifts), c, int(f.corner), f.vertices, f.moved,
           f.maxOffPlane, es::detail::medianOf(moveLengths[c]), es::medianLift(featureLifts[c]),
-          int(weak[c]), sum[c], worst[c], before[c]);
+          int(weak[c]), sum[c], worst[c], before[c], f.flankAngleRad * 180 / M_PI, f.crossed);
     }
   } catch (const std::exception &e) {
     std::cerr << "evidence-study: " << e.what() << "\n";

@@ -262,7 +262,8 @@ inline const std::vector<OptionSpec> &optionTable() {
        ES_REAL(minMedianLift)},
       {"max_feature_fallback_fraction", "--feature-fallback", "", "Feature fallback fraction",
        "Auto method: a feature (a chamfer strip with its corners) stays as it was when more "
-       "than this fraction of its new vertices were kept at rest by the other tests.",
+       "than this fraction of its new vertices were kept at rest by the other tests or would "
+       "move nearer another sheet of the surface (a thin wall's other side) than their own.",
        T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_REAL(maxFeatureFallbackFraction)},
       {"max_feature_off_plane_spacings", "--feature-off-plane", "", "Feature off-plane distance",
@@ -274,6 +275,12 @@ inline const std::vector<OptionSpec> &optionTable() {
        "Auto method: a feature with fewer new vertices than this stays as it was.",
        T::Integer, G::EvidenceGuard, "vertices", 0, 1000, false, kNotInMeshLab, {}, {},
        ES_INT(minFeatureVertices)},
+      {"min_feature_angle_deg", "--min-feature-angle", "", "Minimum feature angle (deg)",
+       "Auto method: an edge stays as it was when its flanks' planes meet at less than this "
+       "angle, at a shallow crease or at a knife edge: the line they meet on is poorly "
+       "determined there (0: off).",
+       T::Real, G::EvidenceGuard, "deg", 0, 90, false, kNotInMeshLab, {}, {},
+       ES_ANGLE(minFeatureAngleRad)},
   };
   return table;
 }

@@ -139,13 +139,20 @@ struct SharpenOptions {
   /// (feature_evidence.h: refusedFraction).
   double maxRefusedFraction = 0.4;
   /// A feature goes back to rest whole when more than this fraction of its
-  /// inserted vertices were refused by the other tests...
+  /// inserted vertices were refused by the other tests or moved across to
+  /// another sheet of the input (feature_evidence.h: crossesSheet)...
   double maxFeatureFallbackFraction = 0.2;
   /// ...or when one of its source vertices lies off its plane by more than
   /// this many sample spacings...
   double maxFeatureOffPlaneSpacings = 0.6;
-  /// ...or when it has fewer than this many inserted vertices.
+  /// ...or when it has fewer than this many inserted vertices...
   int minFeatureVertices = 3;
+  /// ...or, for an edge, when its flanks' planes meet at less than this
+  /// angle (radians; feature_evidence.h: planeMeetingAngle): the line they
+  /// meet on moves by the planes' errors over the angle's sine, at a shallow
+  /// crease (whose chamfer is shallow too) as at a knife edge (a wall's two
+  /// sides taken for the flanks of one edge). 0: off.
+  double minFeatureAngleRad = 20.0 * M_PI / 180.0;
   /// Nothing is sharpened either when the moves mostly slide along the
   /// input's surface: the median distance of their targets from the input
   /// faces around them is below this fraction of their length (a model

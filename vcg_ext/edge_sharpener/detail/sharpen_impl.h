@@ -145,7 +145,7 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   std::optional<EvidenceGuard<MeshType>> evidence;
   if (input) {
     evidence.emplace(m, moves, zones.support, InputSurface{zones.inputFaces, input->faceVertices()},
-                     opt);
+                     report.longestInputEdge, opt);
     report.evidenceGuard = true;
     report.evidence = evidence->revertWeakFeatures();
   }

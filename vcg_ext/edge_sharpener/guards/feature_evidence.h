@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <vector>
 // (vcglib's algorithm headers, included below, need complex.h first)
@@ -31,6 +32,7 @@
 #include "../report.h"
 #include "../subdivision.h"
 #include "../util/vertex_faces.h"
+#include "box_hash_grid.h"
 #include "element_snapshot.h"
 #include "vertex_moves.h"
 
@@ -48,7 +50,21 @@ struct Feature {
   /// extrapolate, up to the sampler's rounding along the edge; where a
   /// blend, a curved face or a thin wall meets the edge, some lie far off.
   double maxOffPlane = 0;
+  /// Edge features: the median angle (radians, planeMeetingAngle) at which
+  /// its vertices' two flank planes meet; pi/2 where none has both planes.
+  double flankAngleRad = M_PI / 2;
+  /// Of its moved vertices, those whose target lies nearer another sheet of
+  /// the input's surface than the faces around its sources (crossesSheet).
+  std::size_t crossed = 0;
 };
+
+/// The angle (radians, in [0, pi/2]) at which two planes of unit normals
+/// `a` and `b` meet: small for a shallow crease (normals nearly alike) and
+/// for a knife edge (normals nearly opposite), where the line they meet on
+/// moves most with an error in either plane. Pure.
+inline double planeMeetingAngle(const Vec3 &a, const Vec3 &b) {
+  return std::acos(std::min(std::abs(a * b), 1.0));
+}
 
 /// How far a move lifts its vertex off the input's surface, as a fraction of
 /// the move's length: the target's distance to the nearest of `triangles`
@@ -148,8 +164,10 @@ void countFeatureMoves(const MeshType &m, const VertexMoves<MeshType> &moves,
   }
 }
 
-/// The counts (countFeatureMoves) and how far each feature's farthest source
-/// vertex lies from its plane, at its rest position (Feature::maxOffPlane).
+/// The counts (countFeatureMoves), how far each feature's farthest source
+/// vertex lies from its plane, at its rest position (Feature::maxOffPlane),
+/// and the median angle between its edge vertices' flanks
+/// (Feature::flankAngleRad).
 template <class MeshType>
 void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
                      const SupportPlanes &support, const std::vector<std::uint32_t> &featureOf,
@@ -158,9 +176,16 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
   const SplitPlan &plan = moves.plan();
   const double spacing = support.sampleSpacing > 0 ? support.sampleSpacing : 1.0;
   for (Feature &f : features) f.maxOffPlane = 0;
+  std::vector<std::vector<double>> angles(features.size());
   for (std::size_t k = 0; k < featureOf.size(); ++k) {
     if (m.vert[moves.firstInserted() + k].IsD()) continue;
     double &farthest = features[featureOf[k]].maxOffPlane;
+    if (plan.inserted[k].originalCount == 2) {
+      const Vec3 &a = support.plane(plan.inserted[k].original[0]).normal;
+      const Vec3 &b = support.plane(plan.inserted[k].original[1]).normal;
+      if (a.SquaredNorm() > 0 && b.SquaredNorm() > 0)
+        angles[featureOf[k]].push_back(planeMeetingAngle(a, b));
+    }
     for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
       const std::size_t s = plan.inserted[k].original[i];
       const Plane &pl = support.plane(s);
@@ -169,6 +194,8 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
           std::max(farthest, std::abs(pl.normal * (moves.exactRest(s) - pl.point)) / spacing);
     }
   }
+  for (std::size_t c = 0; c < features.size(); ++c)
+    features[c].flankAngleRad = angles[c].empty() ? M_PI / 2 : detail::medianOf(angles[c]);
 }
 
 /// Per inserted vertex (split plan order), the lift of its move (moveLift,
@@ -195,6 +222,82 @@ std::vector<double> liftsOfMoves(const MeshType &m, const VertexMoves<MeshType> 
   return lifts;
 }
 
+/// Whether a move's target, `ownDistance` from the input faces around its
+/// sources, lies nearer the input face `other` (at `otherDistance`, unit
+/// normal `otherNormal`) on the far side of a wall or a gap: a face turned
+/// more than 120 degrees from the sources' outward normal `ownNormal`. The
+/// target has then crossed the input's medial axis: the sampler cannot have
+/// resolved an edge that close to another sheet of the surface (a thin
+/// wall, a narrow slot). Pure.
+inline bool crossesSheet(double ownDistance, const Vec3 &ownNormal, double otherDistance,
+                         const Vec3 &otherNormal) {
+  return otherDistance < ownDistance && otherNormal * ownNormal < -0.5;
+}
+
+/// Counts, per feature, its moved inserted vertices whose target crosses to
+/// another sheet of the input (crossesSheet; Feature::crossed). A target's
+/// distance to the input faces around its sources is its move's lift times
+/// its length (`lifts`: liftsOfMoves). The input is the mesh's faces at
+/// their vertices' rest positions; one pass over them finds the faces near
+/// each target (forEachBoxOverlap). `stillExtent` bounds a face's extent
+/// (the longest input edge; infinity: unknown).
+template <class MeshType>
+void countSheetCrossings(const MeshType &m, const VertexMoves<MeshType> &moves,
+                         const SupportPlanes &support, const std::vector<double> &lifts,
+                         const std::vector<std::uint32_t> &featureOf, double stillExtent,
+                         std::vector<Feature> &features) {
+  for (Feature &f : features) f.crossed = 0;
+  const SplitPlan &plan = moves.plan();
+  struct Query {
+    std::uint32_t k;
+    Vec3 target, normal;
+    double ownDistance;
+  };
+  std::vector<Query> queries;
+  std::vector<detail::FaceBox> boxes;
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+    const std::size_t v = moves.firstInserted() + k;
+    if (lifts[k] < 0 || m.vert[v].IsD()) continue;  // not moved
+    Vec3 normal(0, 0, 0);
+    for (int i = 0; i < plan.inserted[k].originalCount; ++i)
+      normal += support.plane(plan.inserted[k].original[i]).normal;
+    const Vec3 target = positionOf(&m.vert[v]);
+    const double own = lifts[k] * (target - plan.inserted[k].rest).Norm();
+    if (!(normal.Norm() > 1e-9) || !(own > 0)) continue;
+    queries.push_back({std::uint32_t(k), target, normal / normal.Norm(), own});
+    detail::FaceBox box(target);
+    for (int c = 0; c < 3; ++c) box.lo[c] -= own, box.hi[c] += own;
+    boxes.push_back(box);
+  }
+  if (queries.empty()) return;
+  std::vector<char> away(m.vert.size(), 0);
+  for (std::size_t v = 0; v < m.vert.size(); ++v) away[v] = !m.vert[v].IsD() && !moves.isAtRest(v);
+  const auto restBox = [&](std::size_t v) { return detail::FaceBox(moves.exactRest(v)); };
+  std::vector<detail::PerThread<std::vector<std::uint32_t>>> crossing(detail::maxThreads());
+  detail::forEachBoxOverlap(
+      m, boxes, restBox, away, stillExtent, [&](int thread, std::uint32_t q, std::uint32_t gi) {
+        const auto &g = m.face[gi];
+        const vcg::Triangle3<double> t(moves.exactRest(vcg::tri::Index(m, g.cV(0))),
+                                       moves.exactRest(vcg::tri::Index(m, g.cV(1))),
+                                       moves.exactRest(vcg::tri::Index(m, g.cV(2))));
+        Vec3 n = (t.cP(1) - t.cP(0)) ^ (t.cP(2) - t.cP(0));
+        const double area2 = n.Norm();
+        if (!(area2 > 0)) return;
+        n /= area2;
+        if (n * queries[q].normal >= -0.5) return;  // cheap test first
+        double d;
+        Vec3 closest;
+        vcg::TrianglePointDistance(t, queries[q].target, d, closest);
+        if (crossesSheet(queries[q].ownDistance, queries[q].normal, d, n))
+          crossing[thread].value.push_back(q);
+      });
+  std::vector<char> crossed(queries.size(), 0);
+  for (const auto &list : crossing)
+    for (std::uint32_t q : list.value) crossed[q] = 1;
+  for (std::size_t q = 0; q < queries.size(); ++q)
+    features[featureOf[queries[q].k]].crossed += crossed[q];
+}
+
 /// The median lift of the moves (liftsOfMoves; 1 when nothing moved). On a
 /// chamfered sampling the moves lift the surface to its sharp edges (near
 /// 1); on a model already sharp they slide along it (near 0).
@@ -206,12 +309,15 @@ inline double medianLift(const std::vector<double> &lifts) {
 }
 
 /// Whether a feature has too little evidence to be sharpened: too short to
-/// be a feature, too many of its vertices refused by the other tests, or one
-/// of its samples far off the plane its flank extrapolates.
+/// be a feature, an edge whose flanks meet at too shallow an angle, too many
+/// of its vertices refused by the other tests, or one of its samples far off
+/// the plane its flank extrapolates.
 inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
   if (!f.corner && f.vertices < std::size_t(opt.minFeatureVertices)) return true;
+  if (!f.corner && f.flankAngleRad < opt.minFeatureAngleRad) return true;
   if (f.maxOffPlane > opt.maxFeatureOffPlaneSpacings) return true;
-  return double(f.vertices - f.moved) > opt.maxFeatureFallbackFraction * double(f.vertices);
+  return double(f.vertices - f.moved + f.crossed) >
+         opt.maxFeatureFallbackFraction * double(f.vertices);
 }
 
 /// Of the inserted vertices of the features placement moved at all, the
@@ -271,8 +377,13 @@ class EvidenceGuard {
  public:
   /// \pre placement (and the extended refinement) has run.
   EvidenceGuard(MeshType &m, VertexMoves<MeshType> &moves, const SupportPlanes &support,
-                const InputSurface &input, const SharpenOptions &opt)
-      : m_(m), moves_(moves), support_(support), input_(input), opt_(opt) {
+                const InputSurface &input, double longestInputEdge, const SharpenOptions &opt)
+      : m_(m),
+        moves_(moves),
+        support_(support),
+        input_(input),
+        longestInputEdge_(longestInputEdge),
+        opt_(opt) {
     const auto regionOf = [&](std::size_t v) -> long {
       return v < support.region.size() ? support.region[v] : -1;
     };
@@ -290,8 +401,11 @@ class EvidenceGuard {
     const SplitPlan &plan = moves_.plan();
     stats.features = features_.size();
     stats.refusedFraction = refusedFraction(features_);
-    stats.medianLift = medianLift(liftsOfMoves(m_, moves_, input_));
+    const std::vector<double> lifts = liftsOfMoves(m_, moves_, input_);
+    stats.medianLift = medianLift(lifts);
     stats.wholeMeshLeft = meshEvidenceIsWeak(stats.refusedFraction, stats.medianLift, opt_);
+    if (!stats.wholeMeshLeft)
+      countSheetCrossings(m_, moves_, support_, lifts, featureOf_, longestInputEdge_, features_);
     const std::vector<char> weak =
         weakFeatures(plan, features_, featureOf_, stats.medianLift, opt_);
     for (std::size_t c = 0; c < features_.size(); ++c)
@@ -347,6 +461,7 @@ class EvidenceGuard {
   VertexMoves<MeshType> &moves_;
   const SupportPlanes &support_;
   InputSurface input_;
+  double longestInputEdge_;
   const SharpenOptions &opt_;
   std::vector<Feature> features_;
   std::vector<std::uint32_t> featureOf_;
