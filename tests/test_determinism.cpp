@@ -135,7 +135,7 @@ class DeterminismTest : public ::testing::TestWithParam<Case> {};
 TEST_P(DeterminismTest, SharpenIsIdenticalForAnyThreadCount) {
   const es::Mesh &input = inputMesh(GetParam().shape, GetParam().faces);
   ASSERT_GT(input.fn, GetParam().faces / 2);
-  for (const es::Method method : {es::Method::Paper, es::Method::Extended}) {
+  for (const es::Method method : {es::Method::Paper, es::Method::Extended, es::Method::Auto}) {
     es::SharpenOptions opt;
     opt.method = method;
     opt.colorize = true;
@@ -197,9 +197,9 @@ TEST_P(DeterminismTest, LocalAdjacencyUpdateAfterSubdivisionEqualsFullRebuild) {
 }
 
 // The MeshLab plugin leaves the mesh's FF adjacency as sharpen() left it
-// (no vcglib rebuild): it must be the adjacency vcglib builds, for both methods.
+// (no vcglib rebuild): it must be the adjacency vcglib builds, for every method.
 TEST_P(DeterminismTest, FaceFaceAfterSharpenEqualsVcglibRebuild) {
-  for (const es::Method method : {es::Method::Paper, es::Method::Extended}) {
+  for (const es::Method method : {es::Method::Paper, es::Method::Extended, es::Method::Auto}) {
     es::Mesh m;
     copyMesh(m, inputMesh(GetParam().shape, GetParam().faces));
     es::SharpenOptions opt;

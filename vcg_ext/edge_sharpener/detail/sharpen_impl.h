@@ -165,14 +165,15 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   if (input) {
     const int verticesBefore = m.vn, facesBefore = m.fn;
     report.evidence.facesGivenBack = input->unsplitResting(m, moves);
+    const bool givenBack = report.evidence.facesGivenBack > 0;
     report.evidence.restingVerticesRemoved =
-        InputFaces<MeshType>::dissolveRestingEdgeVertices(m, moves);
+        InputFaces<MeshType>::dissolveRestingEdgeVertices(m, moves, /*adjacencyValid=*/!givenBack);
     report.evidence.verticesRemoved = std::size_t(verticesBefore - m.vn);
     report.evidence.facesRemoved = std::size_t(facesBefore - m.fn);
     // Before the compaction: it remaps adjacency, which must not name a
     // deleted face (the project's build; vcglib's costs as much as the floor).
-    if (report.evidence.facesGivenBack > 0 || report.evidence.restingVerticesRemoved > 0)
-      buildFaceFace(m);
+    // The merge alone keeps it up to date.
+    if (givenBack) buildFaceFace(m);
   }
   detail::finish(m, labels, opt, report);
   return report;

@@ -12,11 +12,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "../subdivision.h"
+#include "../util/fast_topology.h"
 #include "../util/geometry.h"
 #include "../util/mesh_labels.h"
+#include "../util/parallel.h"
 #include "vertex_moves.h"
 
 namespace edge_sharpener {
@@ -180,10 +183,13 @@ class InputFaces {
   /// hold it on each side: these become (a, b, x), the same surface, as v
   /// lies on the segment ab. Such a vertex adds nothing to the shape, and
   /// metrics that sample vertices (MeshLab's Hausdorff filter) would count
-  /// it twice. Deletes by flag: the caller rebuilds FF adjacency before it
-  /// compacts, so that no live face names a deleted one.
+  /// it twice. Deletes by flag. With `adjacencyValid` (FF adjacency is up to
+  /// date on entry) it stays up to date, by a local update around each
+  /// merge; without, the caller rebuilds it before it compacts, so that no
+  /// live face names a deleted one.
   /// \return the number of vertices removed.
-  static std::size_t dissolveRestingEdgeVertices(MeshType &m, const VertexMoves<MeshType> &moves) {
+  static std::size_t dissolveRestingEdgeVertices(MeshType &m, const VertexMoves<MeshType> &moves,
+                                                 bool adjacencyValid) {
     using FaceType = typename MeshType::FaceType;
     using VertexType = typename MeshType::VertexType;
     const SplitPlan &plan = moves.plan();
@@ -194,21 +200,36 @@ class InputFaces {
       return s.originalCount == 2 && !m.vert[first + k].IsD() && moves.isAtRest(first + k) &&
              moves.isAtRest(s.original[0]) && moves.isAtRest(s.original[1]);
     };
-    // Each candidate's first five faces (a fifth disqualifies it).
+    // Each candidate's first five faces (a fifth disqualifies it), in face
+    // order: each thread lists (candidate, face) pairs of its own range of
+    // faces, and the lists are read in range order.
     std::vector<char> candidate(n);
     for (std::size_t k = 0; k < n; ++k) candidate[k] = resting(k);
-    std::vector<std::uint8_t> count(n, 0);
-    std::vector<std::array<FaceType *, 4>> around(n);
     const VertexType *firstInserted = m.vert.data() + first;
-    for (auto &f : m.face) {
-      if (f.IsD()) continue;
-      for (int j = 0; j < 3; ++j) {
-        const std::size_t k = std::size_t(f.V(j) - firstInserted);  // wraps below first
-        if (k >= n || !candidate[k] || count[k] == 5) continue;
-        if (count[k] < 4) around[k][count[k]] = &f;
-        ++count[k];
+    const std::int64_t faceCount = std::int64_t(m.face.size());
+    const int ranges = faceCount > kParallelMin ? detail::maxThreads() : 1;
+    std::vector<detail::PerThread<std::vector<std::pair<std::uint32_t, std::uint32_t>>>> pairs(
+        ranges);
+#pragma omp parallel for schedule(static, 1) num_threads(ranges)
+    for (int t = 0; t < ranges; ++t) {
+      const std::int64_t begin = faceCount * t / ranges, end = faceCount * (t + 1) / ranges;
+      for (std::int64_t fi = begin; fi < end; ++fi) {
+        const FaceType &f = m.face[fi];
+        if (f.IsD()) continue;
+        for (int j = 0; j < 3; ++j) {
+          const std::size_t k = std::size_t(f.cV(j) - firstInserted);  // wraps below first
+          if (k < n && candidate[k]) pairs[t].value.emplace_back(std::uint32_t(k), fi);
+        }
       }
     }
+    std::vector<std::uint8_t> count(n, 0);
+    std::vector<std::array<FaceType *, 4>> around(n);
+    for (const auto &list : pairs)
+      for (const auto &[k, fi] : list.value) {
+        if (count[k] == 5) continue;
+        if (count[k] < 4) around[k][count[k]] = &m.face[fi];
+        ++count[k];
+      }
     std::size_t removed = 0;
     for (std::size_t k = 0; k < n; ++k) {
       if (count[k] != 4) continue;  // two triangles on each side, no border
@@ -222,7 +243,13 @@ class InputFaces {
       std::array<Side, 2> sides;
       bool ok = true;
       for (FaceType *f : around[k]) {
-        const int iv = f->V(0) == v ? 0 : f->V(1) == v ? 1 : 2;
+        // An earlier merge may have deleted or changed a face (one holding
+        // two candidates).
+        const int iv = f->IsD() ? -1 : f->V(0) == v ? 0 : f->V(1) == v ? 1 : f->V(2) == v ? 2 : -1;
+        if (iv < 0) {
+          ok = false;
+          break;
+        }
         VertexType *p = f->V((iv + 1) % 3), *q = f->V((iv + 2) % 3);
         const bool hasA = p == a || q == a, hasB = p == b || q == b;
         if (hasA == hasB) {
@@ -247,6 +274,10 @@ class InputFaces {
         // (v, b, x) -> (a, b, x): v lies between a and b, so the winding stays.
         for (int j = 0; j < 3; ++j)
           if (side.withB->V(j) == v) side.withB->V(j) = a;
+        // Edge (v, b) became (a, b) in place: its neighbour, the other
+        // side's (v, b, y), is still right. Edge (x, v) became (x, a): its
+        // neighbour is (a, v, x)'s across (x, a).
+        if (adjacencyValid) adoptNeighbour(*side.withB, *side.withA, a, side.apex);
         vcg::tri::Allocator<MeshType>::DeleteFace(m, *side.withA);
       }
       vcg::tri::Allocator<MeshType>::DeleteVertex(m, *v);
@@ -256,6 +287,36 @@ class InputFaces {
   }
 
  private:
+  /// The index of f's edge between vertices p and q (-1: none).
+  template <class FaceType, class VertexType>
+  static int edgeIndex(const FaceType &f, const VertexType *p, const VertexType *q) {
+    for (int i = 0; i < 3; ++i) {
+      const VertexType *s = f.cV(i), *t = f.cV((i + 1) % 3);
+      if ((s == p && t == q) || (s == q && t == p)) return i;
+    }
+    return -1;
+  }
+
+  /// `kept`'s edge (p, q) takes over `gone`'s edge (p, q) and its neighbour
+  /// (a border stays a border), before `gone` is deleted.
+  template <class FaceType, class VertexType>
+  static void adoptNeighbour(FaceType &kept, FaceType &gone, const VertexType *p,
+                             const VertexType *q) {
+    const int i = edgeIndex(kept, p, q), j = edgeIndex(gone, p, q);
+    if (i < 0 || j < 0) throw std::logic_error("resting-vertex merge: edge not found");
+    FaceType *g = gone.FFp(j);
+    if (g == &gone) {
+      kept.FFp(i) = &kept;
+      kept.FFi(i) = i;
+      return;
+    }
+    const int eg = gone.FFi(j);
+    kept.FFp(i) = g;
+    kept.FFi(i) = eg;
+    g->FFp(eg) = &kept;
+    g->FFi(eg) = i;
+  }
+
   std::vector<std::array<std::uint32_t, 3>> triples_;
 };
 
