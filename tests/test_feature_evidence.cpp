@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "edge_sharpener/guards/feature_evidence.h"
+#include "edge_sharpener/util/mesh_types.h"
+#include "hand_built_meshes.h"
 
 namespace es = edge_sharpener;
 
@@ -246,4 +248,46 @@ TEST(FeatureEvidence, SlidingAlongASharpInputLiftsNothing) {
   // A move of no length, or with no faces to measure against, counts as lifting.
   EXPECT_EQ(es::moveLift({0, 0, 0}, {0, 0, 0}, sharp), 1.0);
   EXPECT_EQ(es::moveLift({1, 0, 0}, {0, 0, 0}, {}), 1.0);
+}
+
+// A slab 0.1 thick: a new vertex on its top face's diagonal, moved down into
+// it, crosses to the bottom face once it is past the middle; the mesh pass
+// (one look-up of the faces near each target) finds that face.
+TEST(FeatureEvidence, SheetCrossingsAreFoundInTheMesh) {
+  const double t = 0.1;
+  es::Mesh m;
+  es::hand_built::makeMesh(
+      m, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, t}, {1, 0, t}, {1, 1, t}, {0, 1, t}},
+      {{0, 2, 1},
+       {0, 3, 2},
+       {4, 5, 6},
+       {4, 6, 7},
+       {0, 1, 5},
+       {0, 5, 4},
+       {1, 2, 6},
+       {1, 6, 5},
+       {2, 3, 7},
+       {2, 7, 6},
+       {3, 0, 4},
+       {3, 4, 7}});
+  vcg::tri::Allocator<es::Mesh>::AddVertices(m, 1);  // the new vertex, in no face
+  es::SplitPlan plan;
+  plan.originalVertexCount = 8;
+  plan.inserted.push_back(edgeVertex(4, 6));
+  plan.inserted[0].rest = es::Vec3(0.5, 0.5, t);
+  es::MeshLabels<es::Mesh> labels(m);
+  const es::VertexMoves<es::Mesh> moves(m, plan, labels, false);
+  es::SupportPlanes support;
+  support.reset(9);
+  support.setFit(4, es::SupportFit::of(es::Plane{es::Vec3(0, 0, t), es::Vec3(0, 0, 1)}));
+  support.shareFit(6, 4);
+  std::vector<es::Feature> features(1);
+  const auto crossedWhenMovedDownBy = [&](double depth, double lift) {
+    m.vert[8].P() = es::Mesh::CoordType::Construct(es::Vec3(0.5, 0.5, t - depth));
+    es::countSheetCrossings(m, moves, support, {lift}, {0}, std::sqrt(2.0), features);
+    return features[0].crossed;
+  };
+  EXPECT_EQ(crossedWhenMovedDownBy(0.07, 1.0), 1u);   // 0.03 from the bottom, 0.07 from the top
+  EXPECT_EQ(crossedWhenMovedDownBy(0.03, 1.0), 0u);   // still nearer its own side
+  EXPECT_EQ(crossedWhenMovedDownBy(0.07, -1.0), 0u);  // not moved
 }
