@@ -22,7 +22,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <numeric>
 #include <vector>
 // (vcglib's algorithm headers, included below, need complex.h first)
@@ -223,7 +222,7 @@ std::vector<double> liftsOfMoves(const MeshType &m, const VertexMoves<MeshType> 
 }
 
 /// Whether a move's target, `ownDistance` from the input faces around its
-/// sources, lies nearer the input face `other` (at `otherDistance`, unit
+/// sources, lies nearer another input face (at `otherDistance`, of unit
 /// normal `otherNormal`) on the far side of a wall or a gap: a face turned
 /// more than 120 degrees from the sources' outward normal `ownNormal`. The
 /// target has then crossed the input's medial axis: the sampler cannot have
