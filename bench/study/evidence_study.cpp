@@ -48,14 +48,12 @@ int main(int argc, char **argv) {
     const es::InputSurface surface{zones.inputFaces, inputFaces.faceVertices()};
     es::EvidenceGuard<es::Mesh> guard(m, moves, zones.support, surface, report.longestInputEdge,
                                       opt);
-    std::vector<es::Feature> features = guard.features();
+    const auto judged = guard.judge();
+    const std::vector<es::Feature> &features = guard.features();
     const std::vector<std::uint32_t> &featureOf = guard.featureOf();
-    es::measureFeatures(m, moves, zones.support, featureOf, features);
-    const std::vector<double> lifts = es::liftsOfMoves(m, moves, surface);
-    es::countSheetCrossings(m, moves, zones.support, lifts, featureOf, report.longestInputEdge,
-                            features);
-    const auto weak = es::weakFeatures(plan, features, featureOf, es::medianLift(lifts), opt);
-    const double refused = es::refusedFraction(features);
+    const std::vector<double> &lifts = judged.lifts;
+    const std::vector<char> &weak = judged.weak;
+    const double refused = judged.stats.refusedFraction;
     // Median distance and lift of each feature's moves (distance in sample spacings).
     std::vector<std::vector<double>> moveLengths(features.size()), featureLifts(features.size());
     for (std::size_t k = 0; k < featureOf.size(); ++k) {
@@ -109,7 +107,7 @@ int main(int argc, char **argv) {
           "\"max_off_plane\": %.4f, \"median_displacement\": %.4f, "
           "\"median_lift\": %.4f, \"weak\": %d, \"harm_sum\": %.5f, \"harm_max\": %.5f, "
           "\"before_sum\": %.5f, \"flank_angle_deg\": %.2f, \"crossed\": %zu}\n",
-          name.c_str(), refused, es::medianLift(lifts), c, int(f.corner), f.vertices, f.moved,
+          name.c_str(), refused, judged.stats.medianLift, c, int(f.corner), f.vertices, f.moved,
           f.maxOffPlane, es::detail::medianOf(moveLengths[c]), es::medianLift(featureLifts[c]),
           int(weak[c]), sum[c], worst[c], before[c], f.flankAngleRad * 180 / M_PI, f.crossed);
     }

@@ -389,26 +389,42 @@ class EvidenceGuard {
     featureOf_ = groupFeatures(moves.plan(), regionOf, features_);
   }
 
+  /// What the guard judges from the placement: each feature measured
+  /// (features()), each move's lift (liftsOfMoves), and which features are
+  /// weak (weakFeatures), with the counts of the report.
+  struct Judgement {
+    EvidenceStats stats;
+    std::vector<double> lifts;
+    std::vector<char> weak;
+  };
+  Judgement judge() {
+    Judgement out;
+    EvidenceStats &stats = out.stats;
+    measureFeatures(m_, moves_, support_, featureOf_, features_);
+    stats.features = features_.size();
+    stats.refusedFraction = refusedFraction(features_);
+    out.lifts = liftsOfMoves(m_, moves_, input_);
+    stats.medianLift = medianLift(out.lifts);
+    stats.wholeMeshLeft = meshEvidenceIsWeak(stats.refusedFraction, stats.medianLift, opt_);
+    if (!stats.wholeMeshLeft)
+      countSheetCrossings(m_, moves_, support_, out.lifts, featureOf_, longestInputEdge_,
+                          features_);
+    out.weak = weakFeatures(moves_.plan(), features_, featureOf_, stats.medianLift, opt_);
+    for (std::size_t c = 0; c < features_.size(); ++c)
+      stats.weakFeatures += out.weak[c] && features_[c].moved > 0;
+    return out;
+  }
+
   /// Sends back to rest every move of the features whose evidence is weak
   /// (weakFeatures): their inserted vertices (as Placement::WeakEvidence)
   /// and the zone vertices projected beside them. Runs before the cleanup: a
   /// feature left as it was is never touched by the cleanup's collapses and
   /// flips, so its faces are the input's exactly.
   EvidenceStats revertWeakFeatures() {
-    EvidenceStats stats;
-    measureFeatures(m_, moves_, support_, featureOf_, features_);
+    const Judgement judged = judge();
+    EvidenceStats stats = judged.stats;
     const SplitPlan &plan = moves_.plan();
-    stats.features = features_.size();
-    stats.refusedFraction = refusedFraction(features_);
-    const std::vector<double> lifts = liftsOfMoves(m_, moves_, input_);
-    stats.medianLift = medianLift(lifts);
-    stats.wholeMeshLeft = meshEvidenceIsWeak(stats.refusedFraction, stats.medianLift, opt_);
-    if (!stats.wholeMeshLeft)
-      countSheetCrossings(m_, moves_, support_, lifts, featureOf_, longestInputEdge_, features_);
-    const std::vector<char> weak =
-        weakFeatures(plan, features_, featureOf_, stats.medianLift, opt_);
-    for (std::size_t c = 0; c < features_.size(); ++c)
-      stats.weakFeatures += weak[c] && features_[c].moved > 0;
+    const std::vector<char> &weak = judged.weak;
     const std::size_t first = moves_.firstInserted();
     for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
       if (!weak[featureOf_[k]] || m_.vert[first + k].IsD()) continue;
