@@ -274,3 +274,43 @@ TEST(Subdivision, SplitOfAChamferedCubeKeepsItClosedAndOriented) {
   EXPECT_TRUE(es::hand_built::adjacencyMatchesRebuild(m));
   EXPECT_NEAR(es::test_meshes::signedVolume(m), volume, 1e-6 * volume);
 }
+
+// A split face left at rest is its input face again, fanned from the
+// inserted edge vertices a neighbour still needs: positive areas in the
+// parent's orientation that add up to the parent's, no vertex it drops.
+TEST(Subdivision, RestedFaceKeepsOnlyTheEdgeVerticesItsNeighboursNeed) {
+  // Parent 0 1 2 (normal +z); inserted 0, 1, 2 on edges 0-1, 1-2, 2-0 and 3
+  // at the centre get indices 3 to 6.
+  const std::vector<Vec3> at = {Vec3(0, 0, 0),          Vec3(1, 0, 0),     Vec3(0, 1, 0),
+                                Vec3(0.5, 0, 0),        Vec3(0.5, 0.5, 0), Vec3(0, 0.5, 0),
+                                Vec3(1. / 3, 1. / 3, 0)};
+  const auto check = [&](const es::SplitFace &sf, std::array<bool, 3> keep,
+                         std::vector<std::size_t> kept, std::vector<std::size_t> dropped) {
+    const auto tris = es::detail::restedTriangles(sf, {0, 1, 2}, 3, keep);
+    EXPECT_EQ(tris.size(), 1 + kept.size());
+    double area = 0;
+    for (const auto &t : tris) {
+      const double a = ((at[t[1]] - at[t[0]]) ^ (at[t[2]] - at[t[0]])).Z() / 2;
+      EXPECT_GT(a, 1e-3) << "degenerate or flipped";
+      area += a;
+      for (std::size_t v : dropped) EXPECT_TRUE(t[0] != v && t[1] != v && t[2] != v);
+    }
+    EXPECT_NEAR(area, 0.5, 1e-12);
+    for (std::size_t v : kept) {
+      bool used = false;
+      for (const auto &t : tris) used = used || t[0] == v || t[1] == v || t[2] == v;
+      EXPECT_TRUE(used) << v;
+    }
+  };
+  es::SplitFace corner;
+  corner.edgeVertex = {0, 1, 2};
+  corner.centerVertex = 3;
+  check(corner, {false, false, false}, {}, {3, 4, 5, 6});
+  check(corner, {false, true, false}, {4}, {3, 5, 6});
+  check(corner, {true, false, true}, {3, 5}, {4, 6});
+  check(corner, {true, true, true}, {3, 4, 5}, {6});
+  es::SplitFace chamfer;  // two chamfer edges, 1-2 and 2-0
+  chamfer.edgeVertex = {-1, 1, 2};
+  check(chamfer, {true, true, false}, {4}, {5});  // keep[0] names no vertex
+  check(chamfer, {false, true, true}, {4, 5}, {});
+}

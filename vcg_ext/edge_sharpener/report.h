@@ -88,7 +88,7 @@ struct EvidenceStats {
   double refusedFraction = 0;      ///< of the moved features' vertices, those refused
   double medianLift = 1;           ///< how far the moves lift the surface, per unit of length
   bool wholeMeshLeft = false;      ///< too many refused, or too little lift: nothing sharpened
-  std::size_t facesGivenBack = 0;  ///< split faces left at rest that got their input face back
+  std::size_t facesGivenBack = 0;  ///< split faces at rest back to their input face (fanned)
   std::size_t restingVerticesRemoved = 0;  ///< other inserted vertices at rest, merged away
   std::size_t verticesRemoved = 0;         ///< inserted vertices deleted by the two above
   std::size_t facesRemoved = 0;            ///< faces deleted by the two above

@@ -138,6 +138,34 @@ inline std::vector<std::array<std::size_t, 3>> childTriangles(const SplitFace &s
   return out;
 }
 
+/// A split face left at rest, triangulated again with only the inserted
+/// edge vertices a neighbour still needs (`keep[i]`: edge (v[i], v[i+1])'s
+/// vertex stays): the parent itself when none stays, else a fan from the
+/// first kept vertex over the parent's corners and the other kept vertices,
+/// in the parent's orientation. The fan never joins two points of one edge,
+/// as an edge holds one inserted vertex. Pure.
+inline std::vector<std::array<std::size_t, 3>> restedTriangles(const SplitFace &sf,
+                                                               const std::array<std::size_t, 3> &v,
+                                                               std::size_t firstInserted,
+                                                               const std::array<bool, 3> &keep) {
+  std::vector<std::size_t> polygon;  // the parent's outline, kept edge vertices included
+  std::size_t apex = 0;              // where the fan starts
+  bool any = false;
+  for (int i = 0; i < 3; ++i) {
+    polygon.push_back(v[i]);
+    if (sf.edgeVertex[i] >= 0 && keep[i]) {
+      if (!any) apex = polygon.size();
+      any = true;
+      polygon.push_back(firstInserted + std::size_t(sf.edgeVertex[i]));
+    }
+  }
+  std::rotate(polygon.begin(), polygon.begin() + std::ptrdiff_t(apex), polygon.end());
+  std::vector<std::array<std::size_t, 3>> out;
+  for (std::size_t j = 1; j + 1 < polygon.size(); ++j)
+    out.push_back({polygon[0], polygon[j], polygon[j + 1]});
+  return out;
+}
+
 }  // namespace detail
 
 namespace detail {

@@ -110,10 +110,13 @@ class InputFaces {
   const std::vector<std::array<std::uint32_t, 3>> &faceVertices() const { return triples_; }
 
   /// Gives back its input face to every split face whose vertices all rest
-  /// and whose children are as the split made them, when every split face
-  /// sharing one of its inserted vertices can be given back too; deletes the
-  /// children and the inserted vertices by flag (rebuild FF adjacency, then
-  /// compact). \return the number of faces given back.
+  /// and whose children are as the split made them. An inserted vertex on
+  /// its edge that a split face beside it still needs (that face cannot go
+  /// back) stays, and the face becomes its input face fanned from that
+  /// vertex (restedTriangles): the same surface, as the face is at rest.
+  /// Rewrites the children's slots and deletes the rest and the inserted
+  /// vertices no face needs, by flag (rebuild FF adjacency, then compact).
+  /// \return the number of faces given back (with or without a kept vertex).
   std::size_t unsplitResting(MeshType &m, const VertexMoves<MeshType> &moves) const {
     const SplitPlan &plan = moves.plan();
     const std::size_t n0 = plan.originalVertexCount, count = plan.faces.size();
@@ -134,45 +137,45 @@ class InputFaces {
         out.push_back(n0 + std::size_t(plan.faces[k].centerVertex));
       return out;
     };
-    const auto childAt = [&](std::size_t k, std::size_t c) -> const typename MeshType::FaceType & {
+    const auto slot = [&](std::size_t k, std::size_t c) -> typename MeshType::FaceType & {
       return c == 0 ? m.face[plan.faces[k].face] : m.face[firstAppended[k] + c - 1];
     };
     std::vector<char> back(count, 0);
-    std::vector<std::vector<std::uint32_t>> facesOf(plan.inserted.size());
+    std::vector<char> needed(plan.inserted.size(), 0);  // by a face that cannot go back
     for (std::size_t k = 0; k < count; ++k) {
       bool ok = true;
-      for (std::size_t v : insertedOf(k)) {
-        facesOf[v - n0].push_back(std::uint32_t(k));
-        ok = ok && !m.vert[v].IsD() && moves.isAtRest(v);
-      }
+      for (std::size_t v : insertedOf(k)) ok = ok && !m.vert[v].IsD() && moves.isAtRest(v);
       for (std::uint32_t v : triples_[plan.faces[k].face]) ok = ok && moves.isAtRest(v);
       for (std::size_t c = 0; ok && c < children[k].size(); ++c) {
-        const auto &f = childAt(k, c);
+        const auto &f = slot(k, c);
         ok = !f.IsD();
         for (int j = 0; ok && j < 3; ++j) ok = vcg::tri::Index(m, f.cV(j)) == children[k][c][j];
       }
       back[k] = ok;
-    }
-    // A vertex on an edge between two split faces goes only with both.
-    for (bool changed = true; changed;) {
-      changed = false;
-      for (const auto &faces : facesOf) {
-        bool all = true;
-        for (std::uint32_t k : faces) all = all && back[k];
-        if (all) continue;
-        for (std::uint32_t k : faces) changed |= back[k] != 0, back[k] = 0;
-      }
+      if (!ok)
+        for (std::size_t v : insertedOf(k)) needed[v - n0] = 1;
     }
     std::size_t given = 0;
     for (std::size_t k = 0; k < count; ++k) {
       if (!back[k]) continue;
+      const SplitFace &sf = plan.faces[k];
+      std::array<bool, 3> keep{};
+      for (int i = 0; i < 3; ++i) keep[i] = sf.edgeVertex[i] >= 0 && needed[sf.edgeVertex[i]];
+      const auto &t = triples_[sf.face];
+      const auto rested = detail::restedTriangles(sf, {t[0], t[1], t[2]}, n0, keep);
+      if (rested.size() == children[k].size()) continue;  // nothing to take away
       ++given;
-      auto &parent = m.face[plan.faces[k].face];
-      for (int j = 0; j < 3; ++j) parent.V(j) = &m.vert[triples_[plan.faces[k].face][j]];
-      for (std::size_t c = 1; c < children[k].size(); ++c)
-        vcg::tri::Allocator<MeshType>::DeleteFace(m, m.face[firstAppended[k] + c - 1]);
+      for (std::size_t c = 0; c < children[k].size(); ++c) {
+        auto &f = slot(k, c);
+        if (c >= rested.size()) {
+          vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
+          continue;
+        }
+        for (int j = 0; j < 3; ++j) f.V(j) = &m.vert[rested[c][j]];
+      }
       for (std::size_t v : insertedOf(k))
-        if (!m.vert[v].IsD()) vcg::tri::Allocator<MeshType>::DeleteVertex(m, m.vert[v]);
+        if (!needed[v - n0] && !m.vert[v].IsD())
+          vcg::tri::Allocator<MeshType>::DeleteVertex(m, m.vert[v]);
     }
     return given;
   }
