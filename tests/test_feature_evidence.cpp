@@ -102,10 +102,10 @@ TEST(FeatureEvidence, DisconnectedStripsBetweenTheSameRegionsAreSeparateFeatures
 }
 
 TEST(FeatureEvidence, WeakWhenShortRefusedOrOffItsPlanes) {
-  es::SharpenOptions opt;  // 3 vertices, 20% refused, 0.6 spacings off plane
+  es::SharpenOptions opt;  // 3 vertices, 40% refused, 0.6 spacings off plane
   EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 10), opt));
-  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 8), opt));  // 20%: not more
-  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(10, 7), opt));
+  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 6), opt));  // 40%: not more
+  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(10, 5), opt));
   EXPECT_TRUE(es::featureEvidenceIsWeak(feature(2, 2), opt));
   EXPECT_FALSE(es::featureEvidenceIsWeak(feature(1, 1, 0, /*corner=*/true), opt));
   EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 10, 0.6), opt));
@@ -115,13 +115,13 @@ TEST(FeatureEvidence, WeakWhenShortRefusedOrOffItsPlanes) {
 // A vertex whose target crosses to another sheet of the input counts as one
 // the other tests refused.
 TEST(FeatureEvidence, VerticesCrossingToAnotherSheetCountAsRefused) {
-  es::SharpenOptions opt;  // 20% refused
+  es::SharpenOptions opt;  // 40% refused
   es::Feature f = feature(10, 10);
-  f.crossed = 2;
+  f.crossed = 4;
   EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
-  f.crossed = 3;
+  f.crossed = 5;
   EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
-  f.moved = 9, f.crossed = 2;  // one refused, two crossed: 30%
+  f.moved = 8, f.crossed = 3;  // two refused, three crossed: 50%
   EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
 }
 

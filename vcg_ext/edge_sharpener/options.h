@@ -140,8 +140,9 @@ struct SharpenOptions {
   double maxRefusedFraction = 0.4;
   /// A feature goes back to rest whole when more than this fraction of its
   /// inserted vertices were refused by the other tests or moved across to
-  /// another sheet of the input (feature_evidence.h: crossesSheet)...
-  double maxFeatureFallbackFraction = 0.2;
+  /// another sheet of the input (feature_evidence.h: crossesSheet): the
+  /// bound the whole mesh is held to, held to each feature...
+  double maxFeatureFallbackFraction = 0.4;
   /// ...or when one of its source vertices lies off its plane by more than
   /// this many sample spacings...
   double maxFeatureOffPlaneSpacings = 0.6;
