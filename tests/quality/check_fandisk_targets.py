@@ -4,15 +4,17 @@ run.py --models fandisk --inputs umr), at the default multiplier.
 
 - No method comes out farther from the reference than its input (max and RMS, 1%).
 - At 1% cells, the extended method reaches max x1.6 / RMS x3.2 (measured 0.517,
-  x1.72 / x3.40). Every step is deterministic (MeshLab's resampling, the sharpener, the
-  fixed-seed distance), so the margin is not noise.
+  x1.72 / x3.40), and the default (auto) the issue's target: max below 0.43% of the
+  diagonal, the paper's own figure (measured 0.386, x2.30 / x3.55). Every step is
+  deterministic (MeshLab's resampling, the sharpener, the fixed-seed distance), so the
+  margin is not noise.
 """
 import checks
 
 TOL = 0.01
 MULT = 2.0
 # (variant, resolution): (max below this % of the diagonal, min max factor, min RMS factor)
-TARGETS = {("extended", "1%"): (0.6, 1.6, 3.2)}
+TARGETS = {("extended", "1%"): (0.6, 1.6, 3.2), ("auto", "1%"): (0.43, 2.0, 3.2)}
 
 
 def main():
