@@ -102,10 +102,10 @@ TEST(FeatureEvidence, DisconnectedStripsBetweenTheSameRegionsAreSeparateFeatures
 }
 
 TEST(FeatureEvidence, WeakWhenShortRefusedOrOffItsPlanes) {
-  es::SharpenOptions opt;  // 3 vertices, 50% refused, 0.6 spacings off plane
+  es::SharpenOptions opt;  // 3 vertices, 40% refused, 0.6 spacings off plane
   EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 10), opt));
-  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 5), opt));  // 50%: not more
-  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(10, 4), opt));
+  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 6), opt));  // 40%: not more
+  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(10, 5), opt));
   EXPECT_TRUE(es::featureEvidenceIsWeak(feature(2, 2), opt));
   EXPECT_FALSE(es::featureEvidenceIsWeak(feature(1, 1, 0, /*corner=*/true), opt));
   EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 10, 0.6), opt));
@@ -115,13 +115,13 @@ TEST(FeatureEvidence, WeakWhenShortRefusedOrOffItsPlanes) {
 // A vertex whose target crosses to another sheet of the input counts as one
 // the other tests refused.
 TEST(FeatureEvidence, VerticesCrossingToAnotherSheetCountAsRefused) {
-  es::SharpenOptions opt;  // 50% refused
+  es::SharpenOptions opt;  // 40% refused
   es::Feature f = feature(10, 10);
-  f.crossed = 5;
+  f.crossed = 4;
   EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
-  f.crossed = 6;
+  f.crossed = 5;
   EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
-  f.moved = 8, f.crossed = 4;  // two refused, four crossed: 60%
+  f.moved = 8, f.crossed = 3;  // two refused, three crossed: 50%
   EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
 }
 
@@ -196,7 +196,8 @@ TEST(FeatureEvidence, TooManyRefusalsLeaveTheWholeMesh) {
   TwoStripsAndACorner t;
   std::vector<es::Feature> features;
   const auto featureOf = t.groupAllMoved(features);
-  es::SharpenOptions opt;                    // more than half refused: the whole mesh stays
+  es::SharpenOptions opt;
+  opt.maxRefusedFraction = 0.4;
   opt.maxFeatureFallbackFraction = 1;        // strip B alone would pass
   features[featureOf[4]] = feature(30, 10);  // 20 of 35 refused overall
   const auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, opt);

@@ -136,13 +136,13 @@ struct SharpenOptions {
 
   /// Nothing is sharpened when the tests refused more than this fraction of
   /// the inserted vertices of the features placement moved at all
-  /// (feature_evidence.h: refusedFraction): most of them.
-  double maxRefusedFraction = 0.5;
+  /// (feature_evidence.h: refusedFraction).
+  double maxRefusedFraction = 0.4;
   /// A feature goes back to rest whole when more than this fraction of its
   /// inserted vertices were refused by the other tests or moved across to
-  /// another sheet of the input (feature_evidence.h: crossesSheet): most of
-  /// them, as for the whole mesh...
-  double maxFeatureFallbackFraction = 0.5;
+  /// another sheet of the input (feature_evidence.h: crossesSheet): the
+  /// bound the whole mesh is held to, held to each feature...
+  double maxFeatureFallbackFraction = 0.4;
   /// ...or when one of its source vertices lies off its plane by more than
   /// this many sample spacings...
   double maxFeatureOffPlaneSpacings = 0.6;

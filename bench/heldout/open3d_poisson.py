@@ -1,0 +1,146 @@
+#!/usr/bin/python3
+"""A held-out check of the default method on a tool outside the benchmark: Open3D's Screened
+Poisson reconstruction (depth 8) from 200,000 exact oriented points of each reference shape,
+as the issue that asked for one default measured it. No threshold is chosen on it; it says
+whether a rule chosen on the tuning half harms meshes made by another tool.
+
+  /usr/bin/python3 bench/heldout/open3d_poisson.py [--build BUILD] [--shared DIR]
+      [--method auto] [--out FILE.md] [-- extra CLI options]
+
+References: the generated shapes the quality benchmark wrote (BUILD/quality-cache/generated,
+after scripts/bench-quality.sh), test_meshes/real and ../shared/meshes. Distances:
+mesh-distance --sampling meshlab, "worse" by the benchmark's rule (bench/quality/families.py).
+Needs Debian's python3-open3d; the meshes are written to BUILD/heldout-open3d-poisson.
+"""
+import argparse
+import glob
+import json
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(SOURCE, "bench", "quality"))
+import families  # noqa: E402
+
+POINTS = 200000
+DEPTH = 8
+DISTANCE_SAMPLES = 100000  # as bench/quality/run.py
+# What was learnt from it, by hand (printed under the table in --out).
+NOTES = """What it changed and found (diagnosed by hand):
+
+- It kept one bound from being raised: with the whole mesh's refused bound at 50% instead of
+  40% (`-- --max-refused 0.5`), which gained on the benchmark's tuning half, the rocker-arm
+  (no sharp edge) refuses 49% of its moves, is sharpened, and its RMS rises by 35%.
+- octa-flower17k: the worst vertices are new ones at the petals' acute tips (y = +-17.7): the
+  reconstruction rounds each tip back and the planes fitted to a petal's faces meet beyond the
+  reference's tip, as with the benchmark's Screened Poisson at depth 7.
+- abc6: its designed chamfers, as in the benchmark.
+- ADIS16480 and wedge: not diagnosed yet.
+- A cap on every move (`-- --max-displacement 1.5`, default 2.5 median edge lengths) leaves
+  only ADIS16480 and abc6 worse here, but halves the gains on the benchmark's own marching
+  cubes (validation half x8.13 / x20.1 -> x3.97 / x8.60), whose acute edges move farther:
+  not adopted.
+"""
+
+
+def references(build, shared):
+    refs = {}
+    for p in glob.glob(os.path.join(build, "quality-cache", "generated", "*_reference.ply")):
+        refs[os.path.basename(p)[:-len("_reference.ply")]] = p
+    for d in (os.path.join(SOURCE, "test_meshes", "real"), shared):
+        for p in sorted(glob.glob(os.path.join(d, "*"))):
+            stem, ext = os.path.splitext(os.path.basename(p))
+            if ext.lower() in (".off", ".obj", ".stl", ".ply") and stem != "chamfer-cube":
+                refs.setdefault(stem, p)
+    return refs
+
+
+def reconstruct(reference, out):
+    """Screened Poisson of POINTS area-uniform samples with their faces' normals; the largest
+    connected component, duplicated vertices merged."""
+    import numpy as np
+    import open3d as o3d
+    o3d.utility.random.seed(1)  # the same points, the same mesh, on every run
+    mesh = o3d.io.read_triangle_mesh(reference)
+    mesh.compute_triangle_normals()
+    points = mesh.sample_points_uniformly(POINTS, use_triangle_normal=True)
+    poisson, _ = o3d.geometry.TriangleMesh.create_from_point_cloud_poisson(points, depth=DEPTH)
+    poisson.remove_duplicated_vertices()
+    poisson.remove_degenerate_triangles()
+    clusters, counts, _ = poisson.cluster_connected_triangles()
+    poisson.remove_triangles_by_mask(np.asarray(clusters) != int(np.argmax(np.asarray(counts))))
+    poisson.remove_unreferenced_vertices()
+    o3d.io.write_triangle_mesh(out, poisson)
+
+
+def distance(tool, mesh, reference):
+    p = subprocess.run([tool, mesh, reference, "--json", "--sampling", "meshlab", "--samples",
+                        str(DISTANCE_SAMPLES)], capture_output=True, text=True, check=True)
+    d = json.loads(p.stdout)["symmetric"]
+    return {"max": d["max_percent"], "rms": d["rms_percent"]}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default=os.path.join(SOURCE, "build"))
+    ap.add_argument("--shared", default=os.path.join(SOURCE, "..", "shared", "meshes"))
+    ap.add_argument("--method", default="auto")
+    ap.add_argument("--out", help="also write the table to this markdown file")
+    ap.add_argument("extra", nargs="*", help="further edge-sharpener options (after --)")
+    args = ap.parse_args()
+    try:
+        import open3d  # noqa: F401
+    except ImportError:
+        sys.exit("open3d_poisson: Open3D (Debian python3-open3d) is not installed")
+    sharpener = os.path.join(args.build, "apps", "edge-sharpener")
+    tool = os.path.join(args.build, "apps", "mesh-distance")
+    work = os.path.join(args.build, "heldout-open3d-poisson")
+    os.makedirs(work, exist_ok=True)
+    split = json.load(open(os.path.join(SOURCE, "bench", "quality", "split.json")))
+    half = {m: h for h in ("tuning", "validation") for m in split[h]}
+    rows, worse, factors = [], [], {"tuning": [], "validation": []}
+    for name, ref in sorted(references(args.build, args.shared).items()):
+        made = os.path.join(work, f"{name}.ply")
+        if not os.path.exists(made):
+            reconstruct(ref, made)
+        sharpened = os.path.join(work, f"{name}__{args.method}.ply")
+        run = subprocess.run([sharpener, made, sharpened, "--method", args.method, "--quiet",
+                              *args.extra], capture_output=True, text=True)
+        h = half.get(name, "?")
+        if run.returncode != 0:
+            rows.append(f"| {name} | {h} | refused: {run.stderr.strip()} | | |")
+            continue
+        before, after = distance(tool, made, ref), distance(tool, sharpened, ref)
+        bad = families.is_worse(before, after)
+        if bad:
+            worse.append(name)
+        if h in factors and name not in families.NO_SHARP_FEATURES:
+            factors[h].append((before["max"] / after["max"], before["rms"] / after["rms"]))
+        rows.append(f"| {name} | {h} | {before['max']:.3g} -> {after['max']:.3g} | "
+                    f"{before['rms']:.3g} -> {after['rms']:.3g} | {'**worse**' if bad else ''} |")
+    lines = [f"Open3D Screened Poisson, depth {DEPTH}, {POINTS} exact oriented points; "
+             f"`--method {args.method}` {' '.join(args.extra)}", "",
+             "| reference | half | max (% diag) | RMS (% diag) | |", "|---|---|---|---|---|",
+             *rows, ""]
+    for h, fs in factors.items():
+        if fs:
+            lines.append(f"{h}: geometric means max ×{families._gmean([f[0] for f in fs]):.2f} "
+                         f"/ RMS ×{families._gmean([f[1] for f in fs]):.2f} over {len(fs)}")
+    lines.append(f"worse: {len(worse)} of {len(rows)}" + (f" ({', '.join(worse)})" if worse else ""))
+    text = "\n".join(lines)
+    print(text)
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write("# Held-out check: a tool outside the benchmark\n\n"
+                    "Written by `/usr/bin/python3 bench/heldout/open3d_poisson.py --out "
+                    f"{os.path.relpath(args.out, SOURCE)}` (about 3 minutes). No threshold was "
+                    "fitted to it. Distances in % of the reference's diagonal (mesh-distance "
+                    "--sampling meshlab); **worse** = max up by more than 2% or RMS by more "
+                    "than 1%.\n\n" + text + "\n\n" + NOTES)
+
+
+if __name__ == "__main__":
+    main()
