@@ -2,14 +2,15 @@
 // the paper's method; distances to the exact shapes before and after, and the
 // invariants every output must keep.
 #include <gtest/gtest.h>
-
-#include <cstdio>
-
 #include <vcg/complex/algorithms/clean.h>
 
+#include <array>
+#include <cstdio>
+#include <set>
+
 #include "edge_sharpener/edge_sharpener.h"
-#include "mesh_distance.h"
 #include "edge_sharpener/util/mesh_types.h"
+#include "mesh_distance.h"
 #include "test_meshes/shapes.h"
 
 namespace es = edge_sharpener;
@@ -87,21 +88,22 @@ TEST_P(SharpenShapes, ReducesErrorAndKeepsInvariants) {
   }
   EXPECT_EQ(changed, r.extended.projectedVertices);
   // Counts follow the report's arithmetic.
-  EXPECT_EQ(r.outputVertices, r.inputVertices + r.subdivision.insertedVertices - r.cleanup.collapses);
+  EXPECT_EQ(r.outputVertices,
+            r.inputVertices + r.subdivision.insertedVertices - r.cleanup.collapses);
   EXPECT_EQ(r.outputFaces, r.inputFaces + r.subdivision.addedFaces - r.cleanup.removedFaces);
   EXPECT_EQ(r.cleanup.removedFaces, 2 * r.cleanup.collapses);  // closed input: no border
   EXPECT_EQ(r.cleanup.remaining, 0u);
 
   const es::DistanceReport before = es::measureDistance(input, reference);
   const es::DistanceReport after = es::measureDistance(output, reference);
-  std::printf("%-8s %-14s cell %.1f%%: faces %zu -> %zu, chamfer edges %zu, corners %zu, moved %zu, "
-              "fallbacks %zu | max %.4f%% -> %.4f%% (x%.2f), rms %.5f%% -> %.5f%% (x%.2f)\n",
-              c.method == es::Method::Extended ? "extended" : "paper", c.shape.c_str(),
-              c.cellFraction * 100, r.inputFaces, r.outputFaces,
-              r.filters.chamferEdges, r.filters.cornerFaces, r.placement.moved(),
-              r.placement.fallbacks(), before.maxPercent(), after.maxPercent(),
-              before.max() / after.max(), before.rmsPercent(), after.rmsPercent(),
-              before.rms() / after.rms());
+  std::printf(
+      "%-8s %-14s cell %.1f%%: faces %zu -> %zu, chamfer edges %zu, corners %zu, moved %zu, "
+      "fallbacks %zu | max %.4f%% -> %.4f%% (x%.2f), rms %.5f%% -> %.5f%% (x%.2f)\n",
+      c.method == es::Method::Extended ? "extended" : "paper", c.shape.c_str(),
+      c.cellFraction * 100, r.inputFaces, r.outputFaces, r.filters.chamferEdges,
+      r.filters.cornerFaces, r.placement.moved(), r.placement.fallbacks(), before.maxPercent(),
+      after.maxPercent(), before.max() / after.max(), before.rmsPercent(), after.rmsPercent(),
+      before.rms() / after.rms());
   // Never farther from the exact shape than the input.
   EXPECT_LE(after.max(), before.max() * 1.0001);
   EXPECT_LE(after.rms(), before.rms() * 1.0001);
@@ -157,4 +159,55 @@ TEST(SharpenShapes, SphereWithoutFeaturesIsEssentiallyUnchanged) {
               before.rmsPercent(), after.rmsPercent());
   EXPECT_LE(after.max(), before.max() * 1.05);
   EXPECT_LE(after.rms(), before.rms() * 1.05);
+}
+
+// The auto method gives a split face at rest its input face back, keeping
+// only the inserted vertices a face with a move still needs: an inserted
+// vertex left at rest in the output (on the midpoint of an input edge)
+// always has a moved vertex within two edges of it.
+TEST(SharpenShapes, AutoKeepsAnInsertedVertexAtRestOnlyBesideAMove) {
+  using Key = std::array<float, 3>;
+  const auto key = [](const vcg::Point3f &p) { return Key{p[0], p[1], p[2]}; };
+  std::size_t exercised = 0;
+  for (const char *name : {"cylinder_block", "cross_prism", "lblock_tilted", "sphere"}) {
+    const shapes::Shape &shape = shapes::shapeByName(name);
+    es::Mesh input, output;
+    shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, 0.01), input);
+    std::set<Key> inputVertices, midpoints;
+    for (const auto &v : input.vert) inputVertices.insert(key(v.cP()));
+    for (const auto &f : input.face)
+      for (int i = 0; i < 3; ++i) {
+        const es::Vec3 a = es::positionOf(f.cV(i)), b = es::positionOf(f.cV((i + 1) % 3));
+        midpoints.insert(key(vcg::Point3f::Construct((a + b) / 2)));
+      }
+    vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(output, input);
+    vcg::tri::UpdateTopology<es::Mesh>::FaceFace(output);
+    const es::SharpenReport r = es::sharpen(output, es::SharpenOptions{});
+    // Per output vertex: 0 at an input vertex, 1 an inserted vertex at rest, 2 moved.
+    std::vector<int> kind(output.vert.size());
+    for (std::size_t v = 0; v < output.vert.size(); ++v) {
+      const Key k = key(output.vert[v].cP());
+      kind[v] = inputVertices.count(k) ? 0 : midpoints.count(k) ? 1 : 2;
+    }
+    std::vector<std::set<std::size_t>> neighbours(output.vert.size());
+    for (const auto &f : output.face)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          if (i != j)
+            neighbours[vcg::tri::Index(output, f.cV(i))].insert(vcg::tri::Index(output, f.cV(j)));
+    std::size_t resting = 0, alone = 0;
+    for (std::size_t v = 0; v < output.vert.size(); ++v) {
+      if (kind[v] != 1) continue;
+      ++resting;
+      bool nearMove = false;
+      for (std::size_t u : neighbours[v])
+        for (std::size_t w : neighbours[u]) nearMove = nearMove || kind[u] == 2 || kind[w] == 2;
+      alone += !nearMove;
+    }
+    std::printf("%s: %zu weak features, %zu faces given back, %zu inserted vertices at rest kept\n",
+                name, r.evidence.weakFeatures, r.evidence.facesGivenBack, resting);
+    EXPECT_EQ(alone, 0u) << name;
+    exercised += r.evidence.weakFeatures > 0 && r.evidence.facesGivenBack > 0 && resting > 0;
+  }
+  EXPECT_GT(exercised, 0u);  // some shape had weak features, given-back faces and kept vertices
 }
