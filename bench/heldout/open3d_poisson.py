@@ -37,7 +37,12 @@ NOTES = """What it changed and found (diagnosed by hand):
   reconstruction rounds each tip back and the planes fitted to a petal's faces meet beyond the
   reference's tip, as with the benchmark's Screened Poisson at depth 7.
 - abc6: its designed chamfers, as in the benchmark.
-- ADIS16480 and wedge: not diagnosed yet.
+- wedge: its acute edge (the flank planes meet at 35 degrees) is rounded back by the
+  reconstruction; the new vertices land up to 0.011 units beyond the reference's edge (x =
+  0.81 against 0.80), the overshoot of octa-flower17k's tips along an edge: a small error in
+  the fitted planes moves the line they meet on by that error over the sine of half the angle.
+- ADIS16480: the worst points are new vertices beyond the reference (the forward max rises,
+  0.210% -> 0.371%); not diagnosed further.
 - A cap on every move (`-- --max-displacement 1.5`, default 2.5 median edge lengths) leaves
   only ADIS16480 and abc6 worse here, but halves the gains on the benchmark's own marching
   cubes (validation half x8.13 / x20.1 -> x3.97 / x8.60), whose acute edges move farther:
