@@ -149,13 +149,11 @@ inline std::vector<std::array<std::size_t, 3>> restedTriangles(const SplitFace &
                                                                std::size_t firstInserted,
                                                                const std::array<bool, 3> &keep) {
   std::vector<std::size_t> polygon;  // the parent's outline, kept edge vertices included
-  std::size_t apex = 0;              // where the fan starts
-  bool any = false;
+  std::size_t apex = 0;  // where the fan starts: the first kept vertex (never at 0), or corner 0
   for (int i = 0; i < 3; ++i) {
     polygon.push_back(v[i]);
     if (sf.edgeVertex[i] >= 0 && keep[i]) {
-      if (!any) apex = polygon.size();
-      any = true;
+      if (apex == 0) apex = polygon.size();
       polygon.push_back(firstInserted + std::size_t(sf.edgeVertex[i]));
     }
   }
