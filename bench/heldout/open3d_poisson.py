@@ -13,7 +13,6 @@ mesh-distance --sampling meshlab, "worse" by the benchmark's rule (bench/quality
 Needs Debian's python3-open3d; the meshes are written to BUILD/heldout-open3d-poisson.
 """
 import argparse
-import glob
 import json
 import os
 import subprocess
@@ -21,12 +20,13 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(SOURCE, "bench", "quality"))
+sys.path[:0] = [os.path.join(SOURCE, "bench", "quality"), os.path.join(SOURCE, "bench", "study")]
 import families  # noqa: E402
+import run as quality_run  # noqa: E402
+from evidence_study import references  # noqa: E402
 
 POINTS = 200000
 DEPTH = 8
-DISTANCE_SAMPLES = 100000  # as bench/quality/run.py
 # What was learnt from it, by hand (printed under the table in --out).
 NOTES = """What it changed and found (diagnosed by hand):
 
@@ -50,18 +50,6 @@ NOTES = """What it changed and found (diagnosed by hand):
 """
 
 
-def references(build, shared):
-    refs = {}
-    for p in glob.glob(os.path.join(build, "quality-cache", "generated", "*_reference.ply")):
-        refs[os.path.basename(p)[:-len("_reference.ply")]] = p
-    for d in (os.path.join(SOURCE, "test_meshes", "real"), shared):
-        for p in sorted(glob.glob(os.path.join(d, "*"))):
-            stem, ext = os.path.splitext(os.path.basename(p))
-            if ext.lower() in (".off", ".obj", ".stl", ".ply") and stem != "chamfer-cube":
-                refs.setdefault(stem, p)
-    return refs
-
-
 def reconstruct(reference, out):
     """Screened Poisson of POINTS area-uniform samples with their faces' normals; the largest
     connected component, duplicated vertices merged."""
@@ -82,7 +70,7 @@ def reconstruct(reference, out):
 
 def distance(tool, mesh, reference):
     p = subprocess.run([tool, mesh, reference, "--json", "--sampling", "meshlab", "--samples",
-                        str(DISTANCE_SAMPLES)], capture_output=True, text=True, check=True)
+                        str(quality_run.DISTANCE_SAMPLES)], capture_output=True, text=True, check=True)
     d = json.loads(p.stdout)["symmetric"]
     return {"max": d["max_percent"], "rms": d["rms_percent"]}
 
@@ -107,7 +95,9 @@ def main():
     split = json.load(open(os.path.join(SOURCE, "bench", "quality", "split.json")))
     half = {m: h for h in ("tuning", "validation") for m in split[h]}
     rows, worse, factors = [], [], {"tuning": [], "validation": []}
-    for name, ref in sorted(references(args.build, args.shared).items()):
+    refs = references(os.path.join(args.build, "quality-cache"), args.shared)
+    refs.pop("chamfer-cube", None)  # its reference is another shape (the sharp box)
+    for name, ref in sorted(refs.items()):
         made = os.path.join(work, f"{name}.ply")
         if not os.path.exists(made):
             reconstruct(ref, made)
