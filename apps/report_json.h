@@ -83,6 +83,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
     j["extended"] = {{"regions", r.extended.regions},
                      {"corridors", r.extended.corridors},
                      {"opened_contacts", r.extended.openedContacts},
+                     {"kept_facets", r.extended.keptFacets},
                      {"opened_creases", r.extended.openedCreases},
                      {"zone_faces", r.extended.zoneFaces},
                      {"zone_vertices", r.extended.zoneVertices},

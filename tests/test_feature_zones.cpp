@@ -1,7 +1,8 @@
 // The extended method's detection (feature_zones.h) on hand-built meshes:
 // segmentRegions() gives one region per flat side of voxel solids (a cube, an
 // L-block) and returns thin sides to the zone as corridors by
-// minRegionDepth; openRegionContacts() opens the faces where regions touch;
+// minRegionDepth; openRegionContacts() opens the faces where regions touch,
+// except on narrow facets long enough to be surfaces;
 // labelZoneVertices() gives each zone vertex the region whose plane it lies
 // on, among those within maxLabelHops.
 #include <gtest/gtest.h>
@@ -149,9 +150,48 @@ TEST(OpenRegionContacts, OpensTheFacesAroundWhereRegionsTouch) {
   ASSERT_GT(touching, 0u);
   ASSERT_LT(touching, m.face.size());
 
-  EXPECT_EQ(es::openRegionContacts(m, s.vf, s.zones), touching);
+  // Every side would be left without an interior vertex, and each spans
+  // sqrt(2) < 1.5: none is long enough to be kept as a narrow facet.
+  std::size_t kept = 99;
+  EXPECT_EQ(es::openRegionContacts(m, s.vf, s.zones, 1.5, kept), touching);
+  EXPECT_EQ(kept, 0u);
   for (std::size_t f = 0; f < m.face.size(); ++f)
     EXPECT_EQ(s.zones.faceRegion[f], opens[f] ? es::kZone : before[f]) << "face " << f;
+}
+
+// A bar of 1 x 1 x 8 voxels, two cells to a voxel: its four long sides are
+// facets two cells wide, whose every face touches another side, so opening
+// the contacts would leave them no interior vertex. Spanning 8, they keep
+// their faces; the square ends (span sqrt(2)) open. With no length given,
+// every side opens; on a finer bar (four cells a voxel) every side keeps an
+// interior vertex and opens at its contacts whatever the length.
+TEST(OpenRegionContacts, NarrowFacetsLongerThanTheLengthKeepTheirFaces) {
+  std::vector<std::array<int, 3>> cells;
+  for (int z = 0; z < 8; ++z) cells.push_back({0, 0, z});
+  const auto isEnd = [](Side side) { return side.first / 2 == 2; };  // normal along z
+  for (const int n : {2, 4})
+    for (const double minLength : {0.0, 4.0}) {
+      SCOPED_TRACE(testing::Message() << "cells a voxel " << n << ", length " << minLength);
+      es::Mesh m;
+      es::hand_built::voxelSurface(m, cells, n);
+      Segmented s(m, 1);
+      ASSERT_EQ(s.stats.regions, 6u);
+      const std::vector<int> before = s.zones.faceRegion;
+      std::size_t kept = 99;
+      const std::size_t opened = es::openRegionContacts(m, s.vf, s.zones, minLength, kept);
+      const bool keepsLongSides = n == 2 && minLength > 0;
+      EXPECT_EQ(kept, keepsLongSides ? 4u : 0u);
+      std::size_t endFaces = 0, openedOnLongSides = 0;
+      for (std::size_t f = 0; f < m.face.size(); ++f) {
+        const bool end = isEnd(sideOf(m.face[f], n));
+        endFaces += end;
+        if (!end) openedOnLongSides += s.zones.faceRegion[f] == es::kZone;
+        if (end || !keepsLongSides) continue;
+        EXPECT_EQ(s.zones.faceRegion[f], before[f]) << "face " << f;
+      }
+      if (n == 2) EXPECT_EQ(opened - openedOnLongSides, endFaces);  // ends: all faces touch
+      EXPECT_EQ(openedOnLongSides > 0, !keepsLongSides);
+    }
 }
 
 namespace {

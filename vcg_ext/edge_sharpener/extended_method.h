@@ -25,8 +25,10 @@ void detectFeatureZones(MeshType &m, MeshLabels<MeshType> &labels, const Sharpen
   zones.inputFaces = VertexFaceTable(m);
   const VertexFaceTable &vf = zones.inputFaces;
   segmentRegions(m, labels, vf, opt.minRegionDepth, zones, stats, report.smooth.boundaryEdges > 0);
+  zones.support.sampleSpacing = medianEdgeLength(m);
   if (opt.openRegionContacts) {
-    stats.openedContacts = openRegionContacts(m, vf, zones);
+    stats.openedContacts = openRegionContacts(
+        m, vf, zones, opt.minFacetLengthSpacings * zones.support.sampleSpacing, stats.keptFacets);
     stats.zoneFaces += stats.openedContacts;
   }
   if (opt.openInternalCreases) {
@@ -37,7 +39,6 @@ void detectFeatureZones(MeshType &m, MeshLabels<MeshType> &labels, const Sharpen
     stats.zoneFaces += stats.openedCreases;
   }
   labelZoneVertices(m, vf, opt, zones, stats);
-  zones.support.sampleSpacing = medianEdgeLength(m);
   report.filters = markZoneChamfers(m, labels, zones, opt.sameRegionFeatureAngleRad);
 }
 

@@ -157,6 +157,12 @@ inline const std::vector<OptionSpec> &optionTable() {
        "touch.",
        T::Flag, G::ExtendedTuning, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_FLAG(openRegionContacts)},
+      {"min_facet_length_spacings", "--min-facet-length", "", "Narrow facet length",
+       "...except the faces of a region that opening would leave without an interior vertex "
+       "and that spans at least this many sample spacings: a narrow facet (of a coarse "
+       "cylinder), not a smooth piece of a chamfer (0: such regions open too).",
+       T::Real, G::ExtendedTuning, "sample spacings", 0, 1e6, false, kNotInMeshLab, {}, {},
+       ES_REAL(minFacetLengthSpacings)},
       {"open_internal_creases", "--keep-internal-creases", "", "Open internal creases",
        "Return to the feature zone the region faces around internal creases (a non-smooth edge "
        "inside one region).",

@@ -58,6 +58,10 @@ struct SharpenOptions {
   /// Return to the zone the region faces around vertices where two regions
   /// touch (feature_zones.h: openRegionContacts).
   bool openRegionContacts = true;
+  /// ...except the faces of a region that opening would leave without an
+  /// interior vertex and that spans at least this many sample spacings (a
+  /// narrow facet of a coarse cylinder). 0: such regions open too.
+  double minFacetLengthSpacings = 10.0;
   /// Return to the zone the region faces around internal creases (a
   /// non-smooth edge inside one region: feature_zones.h: openInternalCreases).
   bool openInternalCreases = true;

@@ -196,29 +196,78 @@ void segmentRegions(MeshType &m, MeshLabels<MeshType> &labels, const VertexFaceT
                         zones, stats);
 }
 
-/// Returns to the zone every region face incident to a marked vertex.
+/// Returns to the zone every region face incident to a marked vertex, except
+/// the faces of the regions in `kept` (indexed by region; empty: none kept).
 /// \return the number of faces returned.
 inline std::size_t openFacesAround(const VertexFaceTable &vf, const std::vector<char> &marked,
-                                   FeatureZones &zones) {
+                                   FeatureZones &zones, const std::vector<char> &kept = {}) {
   std::size_t opened = 0;
   for (std::size_t v = 0; v < marked.size(); ++v) {
     if (!marked[v]) continue;
-    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
-      if (zones.faceRegion[*fi] != kZone) {
-        zones.faceRegion[*fi] = kZone;
-        ++opened;
-      }
+    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
+      const int r = zones.faceRegion[*fi];
+      if (r == kZone || (!kept.empty() && kept[r])) continue;
+      zones.faceRegion[*fi] = kZone;
+      ++opened;
+    }
   }
   return opened;
 }
 
+namespace detail {
+
+/// Per region: whether opening the faces around the `marked` vertices would
+/// leave it no interior vertex (one whose faces all stay in it) although its
+/// faces span at least `minLength` (their bounding box's diagonal). Such a
+/// region is a facet narrower than its contacts' rings (of a coarse
+/// cylinder), not a smooth piece of a chamfer band: those are short, and the
+/// bands without an interior vertex were corridors (dropCorridors).
+template <class MeshType>
+std::vector<char> narrowFacets(const MeshType &m, const VertexFaceTable &vf,
+                               const std::vector<char> &marked, const FeatureZones &zones,
+                               double minLength) {
+  int regions = 0;
+  for (const int r : zones.faceRegion) regions = std::max(regions, r + 1);
+  std::vector<char> narrow(regions, 0);
+  if (!(minLength > 0)) return narrow;
+  std::vector<char> survives(regions, 0);
+  const std::size_t nv = m.vert.size();
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (vf.degree(v) == 0 || marked[v]) continue;
+    const int r = zones.faceRegion[*vf.begin(v)];
+    if (r == kZone || survives[r]) continue;
+    bool interior = true;
+    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v) && interior; ++fi) {
+      const auto &f = m.face[*fi];
+      interior = zones.faceRegion[*fi] == r;
+      for (int k = 0; k < 3 && interior; ++k) interior = !marked[vcg::tri::Index(m, f.cV(k))];
+    }
+    survives[r] = interior;
+  }
+  std::vector<vcg::Box3<double>> extent(regions);
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    const int r = zones.faceRegion[f];
+    if (r == kZone || survives[r] || m.face[f].IsD()) continue;
+    for (int k = 0; k < 3; ++k) extent[r].Add(positionOf(m.face[f].cV(k)));
+  }
+  for (int r = 0; r < regions; ++r)
+    narrow[r] = !survives[r] && !extent[r].IsNull() && extent[r].Diag() >= minLength;
+  return narrow;
+}
+
+}  // namespace detail
+
 /// Returns to the zone every region face with a vertex shared by two or more
 /// regions. Where two regions touch directly the chamfer was swallowed by
 /// their growth (its edges passed the smooth test); opening the contact
-/// turns it back into a zone to sharpen.
-/// \return the number of faces returned to the zone.
+/// turns it back into a zone to sharpen. A narrow facet (detail::narrowFacets,
+/// at least `minFacetLength` long) keeps its faces: opened, it would vanish
+/// and the planes beside it would be extrapolated across it.
+/// \return the number of faces returned to the zone; `keptFacets` counts
+///         the narrow facets kept.
 template <class MeshType>
-std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, FeatureZones &zones) {
+std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, FeatureZones &zones,
+                               double minFacetLength, std::size_t &keptFacets) {
   const std::int64_t nv = std::int64_t(m.vert.size());
   std::vector<char> contact(nv, 0);
 #pragma omp parallel for schedule(static, 8192) if (nv > kParallelMin)
@@ -231,7 +280,9 @@ std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, Fea
       if (seen != r) contact[v] = 1;
     }
   }
-  return openFacesAround(vf, contact, zones);
+  const std::vector<char> narrow = detail::narrowFacets(m, vf, contact, zones, minFacetLength);
+  keptFacets = std::size_t(std::count(narrow.begin(), narrow.end(), 1));
+  return openFacesAround(vf, contact, zones, narrow);
 }
 
 /// Returns to the zone every region face around a vertex of an internal
