@@ -143,6 +143,25 @@ TEST(FeatureEvidence, WeakWhereTheFlanksMeetAtAShallowAngle) {
   EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
 }
 
+// An edge whose flanks' planes meet on a line that crosses its chamfer
+// instead of running along it (the two walls beside a thin wall's cap) is
+// weak; a corner is judged by its edges.
+TEST(FeatureEvidence, WeakWhereThePlanesLineCrossesTheChamfer) {
+  es::SharpenOptions opt;  // 45 degrees
+  const double deg = M_PI / 180;
+  es::Feature f = feature(10, 10);
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));  // along it
+  f.lineChamferAngleRad = 44 * deg;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  f.lineChamferAngleRad = 46 * deg;
+  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  es::Feature corner = feature(1, 1, 0, /*corner=*/true);
+  corner.lineChamferAngleRad = 80 * deg;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(corner, opt));
+  opt.maxFeatureLineChamferAngleRad = 0;  // off
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+}
+
 TEST(FeatureEvidence, PlanesMeetAtTheSmallerOfTheirAngles) {
   const double deg = M_PI / 180;
   const es::Vec3 up(0, 0, 1);

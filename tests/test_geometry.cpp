@@ -272,3 +272,21 @@ TEST(LiesOnSegment, OnItUpToFloatRoundingOnly) {
   EXPECT_FALSE(es::liesOnSegment(Vec3(101.5, 1.5, 0), a, b));      // on the line, beyond b
   EXPECT_FALSE(es::liesOnSegment(a, a, a));                        // no segment
 }
+
+// The line two planes meet on lies along a surface (0), pierces it (pi/2) or
+// crosses it at the angle between them; parallel planes or no surface: pi/2.
+TEST(LineAngleToSurface, AngleBetweenThePlanesLineAndTheSurface) {
+  using es::Vec3;
+  const double deg = M_PI / 180;
+  const Vec3 side(1, 0, 0), top(0, 0, 1);   // meet on the y axis
+  const auto turnedFromY = [&](double a) {  // a unit normal at `a` from the y axis
+    return Vec3(0, std::cos(a * deg), std::sin(a * deg));
+  };
+  const Vec3 chamfer = Vec3(1, 0, 1) / std::sqrt(2.0);
+  EXPECT_NEAR(es::lineAngleToSurface(side, top, chamfer), 0.0, 1e-12);  // along its chamfer
+  EXPECT_NEAR(es::lineAngleToSurface(side, top, Vec3(0, 1, 0)), 90 * deg, 1e-9);
+  EXPECT_NEAR(es::lineAngleToSurface(side, top, turnedFromY(60)), 30 * deg, 1e-9);
+  EXPECT_NEAR(es::lineAngleToSurface(top, side, -turnedFromY(60)), 30 * deg, 1e-9);  // signs
+  EXPECT_NEAR(es::lineAngleToSurface(side, side, chamfer), 90 * deg, 1e-12);         // parallel
+  EXPECT_NEAR(es::lineAngleToSurface(side, top, Vec3(0, 0, 0)), 90 * deg, 1e-12);
+}

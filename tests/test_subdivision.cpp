@@ -103,11 +103,21 @@ TEST(Subdivision, OneChamferEdgeSplitsBothItsFacesInTwo) {
   tetrahedron(m, 0.3);
   es::MeshLabels<es::Mesh> labels(m);
   markChamferEdges(m, labels, {0});  // a-b: faces a b c and b a d
+  es::computeFaceNormals(m, labels);
   const es::SplitPlan plan = es::planSplits(m, labels);
   ASSERT_EQ(plan.originalVertexCount, 4u);
   ASSERT_EQ(plan.inserted.size(), 1u);  // one vertex, shared by both faces of the edge
   EXPECT_EQ(plan.inserted[0].originalCount, 2);
   EXPECT_LT((plan.inserted[0].rest - Vec3(0.5, 0, 0)).Norm(), 1e-12);  // the midpoint
+  // Its chamfer's normal: the two faces' unit normals summed and normalised.
+  Vec3 sum = labels.normal[&m.face[0]] + labels.normal[&m.face[1]];
+  sum.Normalize();
+  EXPECT_LT((plan.inserted[0].chamferNormal - sum).Norm(), 1e-12);
+  // It bisects the faces' normals, across the edge a-b (along x).
+  EXPECT_NEAR(plan.inserted[0].chamferNormal.Norm(), 1.0, 1e-12);
+  EXPECT_NEAR(plan.inserted[0].chamferNormal[0], 0.0, 1e-12);
+  EXPECT_NEAR(plan.inserted[0].chamferNormal * labels.normal[&m.face[0]],
+              plan.inserted[0].chamferNormal * labels.normal[&m.face[1]], 1e-12);
   ASSERT_EQ(plan.faces.size(), 2u);
   for (const es::SplitFace &sf : plan.faces) {
     EXPECT_EQ(sf.centerVertex, -1);

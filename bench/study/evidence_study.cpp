@@ -106,10 +106,12 @@ int main(int argc, char **argv) {
           "\"vertices\": %zu, \"moved\": %zu, "
           "\"max_off_plane\": %.4f, \"median_displacement\": %.4f, "
           "\"median_lift\": %.4f, \"weak\": %d, \"harm_sum\": %.5f, \"harm_max\": %.5f, "
-          "\"before_sum\": %.5f, \"flank_angle_deg\": %.2f, \"crossed\": %zu}\n",
+          "\"before_sum\": %.5f, \"flank_angle_deg\": %.2f, \"line_chamfer_angle_deg\": %.2f, "
+          "\"crossed\": %zu}\n",
           name.c_str(), refused, judged.stats.medianLift, c, int(f.corner), f.vertices, f.moved,
           f.maxOffPlane, es::detail::medianOf(moveLengths[c]), es::medianLift(featureLifts[c]),
-          int(weak[c]), sum[c], worst[c], before[c], f.flankAngleRad * 180 / M_PI, f.crossed);
+          int(weak[c]), sum[c], worst[c], before[c], f.flankAngleRad * 180 / M_PI,
+          f.lineChamferAngleRad * 180 / M_PI, f.crossed);
     }
   } catch (const std::exception &e) {
     std::cerr << "evidence-study: " << e.what() << "\n";

@@ -287,6 +287,13 @@ inline const std::vector<OptionSpec> &optionTable() {
        "determined there (0: off).",
        T::Real, G::EvidenceGuard, "deg", 0, 90, false, kNotInMeshLab, {}, {},
        ES_ANGLE(minFeatureAngleRad)},
+      {"max_feature_line_chamfer_angle_deg", "--line-chamfer-angle", "",
+       "Line-chamfer angle (deg)",
+       "Auto method: an edge stays as it was when the line its flanks' planes meet on turns "
+       "out of its chamfer by a median angle above this: a sharp edge runs along its chamfer "
+       "(0: off).",
+       T::Real, G::EvidenceGuard, "deg", 0, 90, false, kNotInMeshLab, {}, {},
+       ES_ANGLE(maxFeatureLineChamferAngleRad)},
   };
   return table;
 }

@@ -158,6 +158,11 @@ struct SharpenOptions {
   /// crease (whose chamfer is shallow too) as at a knife edge (a wall's two
   /// sides taken for the flanks of one edge). 0: off.
   double minFeatureAngleRad = 20.0 * M_PI / 180.0;
+  /// ...or when the lines its vertices' planes meet on turn out of its
+  /// chamfer by a median angle (radians) above this: a sharp edge runs along
+  /// its chamfer, while planes that meet across it (the two walls beside a
+  /// thin wall's cap) make no edge there. 0 disables.
+  double maxFeatureLineChamferAngleRad = 45.0 * M_PI / 180.0;
   /// Nothing is sharpened either when the moves mostly slide along the
   /// input's surface: the median distance of their targets from the input
   /// faces around them is below this fraction of their length (a model

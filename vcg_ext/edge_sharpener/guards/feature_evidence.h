@@ -52,6 +52,10 @@ struct Feature {
   /// Edge features: the median angle (radians, planeMeetingAngle) at which
   /// its vertices' two flank planes meet; pi/2 where none has both planes.
   double flankAngleRad = M_PI / 2;
+  /// Edge features: the median angle (radians, lineAngleToSurface) between
+  /// the line its vertices' flank planes meet on and its chamfer; 0 where
+  /// none has both planes.
+  double lineChamferAngleRad = 0;
   /// Of its moved vertices, those whose target lies nearer another sheet of
   /// the input's surface than the faces around its sources (crossesSheet).
   std::size_t crossed = 0;
@@ -165,8 +169,9 @@ void countFeatureMoves(const MeshType &m, const VertexMoves<MeshType> &moves,
 
 /// The counts (countFeatureMoves), how far each feature's farthest source
 /// vertex lies from its plane, at its rest position (Feature::maxOffPlane),
-/// and the median angle between its edge vertices' flanks
-/// (Feature::flankAngleRad).
+/// the median angle between its edge vertices' flanks
+/// (Feature::flankAngleRad) and between their line and the chamfer
+/// (Feature::lineChamferAngleRad).
 template <class MeshType>
 void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
                      const SupportPlanes &support, const std::vector<std::uint32_t> &featureOf,
@@ -175,15 +180,19 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
   const SplitPlan &plan = moves.plan();
   const double spacing = support.sampleSpacing > 0 ? support.sampleSpacing : 1.0;
   for (Feature &f : features) f.maxOffPlane = 0;
-  std::vector<std::vector<double>> angles(features.size());
+  std::vector<std::vector<double>> angles(features.size()), lineAngles(features.size());
   for (std::size_t k = 0; k < featureOf.size(); ++k) {
     if (m.vert[moves.firstInserted() + k].IsD()) continue;
     double &farthest = features[featureOf[k]].maxOffPlane;
     if (plan.inserted[k].originalCount == 2) {
       const Vec3 &a = support.plane(plan.inserted[k].original[0]).normal;
       const Vec3 &b = support.plane(plan.inserted[k].original[1]).normal;
-      if (a.SquaredNorm() > 0 && b.SquaredNorm() > 0)
+      if (a.SquaredNorm() > 0 && b.SquaredNorm() > 0) {
         angles[featureOf[k]].push_back(planeMeetingAngle(a, b));
+        const Vec3 &chamfer = plan.inserted[k].chamferNormal;
+        if (chamfer.SquaredNorm() > 0)
+          lineAngles[featureOf[k]].push_back(lineAngleToSurface(a, b, chamfer));
+      }
     }
     for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
       const std::size_t s = plan.inserted[k].original[i];
@@ -193,8 +202,10 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
           std::max(farthest, std::abs(pl.normal * (moves.exactRest(s) - pl.point)) / spacing);
     }
   }
-  for (std::size_t c = 0; c < features.size(); ++c)
+  for (std::size_t c = 0; c < features.size(); ++c) {
     features[c].flankAngleRad = angles[c].empty() ? M_PI / 2 : detail::medianOf(angles[c]);
+    features[c].lineChamferAngleRad = lineAngles[c].empty() ? 0 : detail::medianOf(lineAngles[c]);
+  }
 }
 
 /// Per inserted vertex (split plan order), the lift of its move (moveLift,
@@ -308,12 +319,16 @@ inline double medianLift(const std::vector<double> &lifts) {
 }
 
 /// Whether a feature has too little evidence to be sharpened: too short to
-/// be a feature, an edge whose flanks meet at too shallow an angle, too many
+/// be a feature, an edge whose flanks meet at too shallow an angle or on a
+/// line that crosses its chamfer instead of running along it, too many
 /// of its vertices refused by the other tests, or one of its samples far off
 /// the plane its flank extrapolates.
 inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
   if (!f.corner && f.vertices < std::size_t(opt.minFeatureVertices)) return true;
   if (!f.corner && f.flankAngleRad < opt.minFeatureAngleRad) return true;
+  if (!f.corner && opt.maxFeatureLineChamferAngleRad > 0 &&
+      f.lineChamferAngleRad > opt.maxFeatureLineChamferAngleRad)
+    return true;
   if (f.maxOffPlane > opt.maxFeatureOffPlaneSpacings) return true;
   return double(f.vertices - f.moved + f.crossed) >
          opt.maxFeatureFallbackFraction * double(f.vertices);

@@ -29,6 +29,18 @@ inline double angleBetween(const Vec3 &u, const Vec3 &v) {
   return std::atan2((u ^ v).Norm(), u * v);
 }
 
+/// The angle (radians, in [0, pi/2]) between the line where planes of unit
+/// normals `a` and `b` meet and a surface of unit normal `surface`: 0 when
+/// the line runs along the surface (a sharp edge along its chamfer), pi/2
+/// when it pierces it. pi/2 when the planes are parallel or `surface` is
+/// zero. Pure.
+inline double lineAngleToSurface(const Vec3 &a, const Vec3 &b, const Vec3 &surface) {
+  const Vec3 line = a ^ b;
+  const double scale = line.Norm() * surface.Norm();
+  if (!(scale > 0)) return M_PI / 2;
+  return std::asin(std::min(std::abs(line * surface) / scale, 1.0));
+}
+
 /// The point of the line P∩Q closest to `target`, or nothing when the planes
 /// are parallel within `parallelAngleRad`.
 ///
