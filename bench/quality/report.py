@@ -312,6 +312,17 @@ WORSE_CAUSES = {
         "at 2% cells Uniform Mesh Resampling leaves the input 6.8% of the diagonal off (the "
         "twisted shape's features are thinner than a cell); the fitted planes belong to that "
         "surface, not the reference's, and RMS moves by +1.5%."),
+    "tube": (
+        "a wall 0.155 thick (1.3 cells at 1%) between a 16-gon outside and a 14-gon inside, "
+        "facets 2.3-2.7 cells wide. With CSG 1% (marching intersections) the inner facets touch "
+        "their neighbours without a chamfer, and opening those contacts erased the facet facing "
+        "x = 0.66: its neighbours' planes (normals 26 degrees either side) met at r = 0.73, "
+        "inside the wall, along the whole tube (0.578% of the diagonal). A facet at least 10 "
+        "sample spacings long now keeps its faces. With VDB 1% the cap's annulus (1.3 cells) "
+        "is no region, and a 3-vertex feature took the outer and the inner facet for the "
+        "flanks of one edge: their planes meet on a nearly vertical line 0.09 above the cap. "
+        "An edge whose planes' line turns more than 45 degrees out of its chamfer now stays as "
+        "it was."),
     "abc6": (
         "the reference has designed 45-degree conical chamfers (about 1e-4 units tall, 2-3 cells at 0.5%) between "
         "its top and its cylindrical walls. Both fitted planes are exact (top z = 1.5875e-3, wall "

@@ -3,9 +3,9 @@
 run.py --models fandisk --inputs umr), at the default multiplier.
 
 - No method comes out farther from the reference than its input (max and RMS, 1%).
-- At 1% cells, the extended method reaches max x1.6 / RMS x3.2 (measured 0.517,
-  x1.72 / x3.40), and the default (auto) the issue's target: max below 0.43% of the
-  diagonal, the paper's own figure (measured 0.386, x2.30 / x3.55). Every step is
+- At 1% cells, the extended method reaches max x1.6 / RMS x3.2 (measured 0.493,
+  x1.80 / x3.52), and the default (auto) the issue's target: max below 0.43% of the
+  diagonal, the paper's own figure (measured 0.403, x2.20 / x3.57). Every step is
   deterministic (MeshLab's resampling, the sharpener, the fixed-seed distance), so the
   margin is not noise.
 """
