@@ -22,7 +22,7 @@ namespace edge_sharpener {
 struct InsertedVertexSource {
   std::array<std::size_t, 3> original{};
   int originalCount = 0;
-  Vec3 rest;
+  Vec3 rest{0, 0, 0};
   /// The unit normal of the chamfer or corner faces it lies on (the sum of
   /// their normals, normalised); zero when unknown.
   Vec3 chamferNormal{0, 0, 0};
