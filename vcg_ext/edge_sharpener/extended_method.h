@@ -24,11 +24,13 @@ void detectFeatureZones(MeshType &m, MeshLabels<MeshType> &labels, const Sharpen
   ExtendedStats &stats = report.extended;
   zones.inputFaces = VertexFaceTable(m);
   const VertexFaceTable &vf = zones.inputFaces;
-  segmentRegions(m, labels, vf, opt.minRegionDepth, zones, stats, report.smooth.boundaryEdges > 0);
+  const bool meshHasBorder = report.smooth.boundaryEdges > 0;
+  segmentRegions(m, labels, vf, opt.minRegionDepth, zones, stats, meshHasBorder);
   zones.support.sampleSpacing = medianEdgeLength(m);
   if (opt.openRegionContacts) {
-    stats.openedContacts = openRegionContacts(
-        m, vf, zones, opt.minFacetLengthSpacings * zones.support.sampleSpacing, stats.keptFacets);
+    stats.openedContacts =
+        openRegionContacts(m, vf, zones, opt.minFacetLengthSpacings * zones.support.sampleSpacing,
+                           stats.keptFacets, meshHasBorder);
     stats.zoneFaces += stats.openedContacts;
   }
   if (opt.openInternalCreases) {

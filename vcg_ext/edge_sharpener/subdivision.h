@@ -23,8 +23,9 @@ struct InsertedVertexSource {
   std::array<std::size_t, 3> original{};
   int originalCount = 0;
   Vec3 rest{0, 0, 0};
-  /// The unit normal of the chamfer or corner faces it lies on (the sum of
-  /// their normals, normalised); zero when unknown.
+  /// A chamfer-edge vertex: the sum of the unit normals of the edge's two
+  /// faces, whose direction is its chamfer's normal (lineAngleToSurface reads
+  /// only the direction). Zero for a corner vertex.
   Vec3 chamferNormal{0, 0, 0};
 };
 
@@ -60,11 +61,8 @@ SplitPlan planSplits(MeshType &m, MeshLabels<MeshType> &labels) {
     splitIndex[&f] = int(plan.faces.size());
     plan.faces.push_back(SplitFace{vcg::tri::Index(m, &f)});
   }
-  const auto addVertex = [&](std::initializer_list<const typename MeshType::VertexType *> vs,
-                             const Vec3 &faceNormalSum) {
+  const auto addVertex = [&](std::initializer_list<const typename MeshType::VertexType *> vs) {
     InsertedVertexSource s;
-    const double length = faceNormalSum.Norm();
-    if (length > 1e-12) s.chamferNormal = faceNormalSum / length;
     Vec3 sum(0, 0, 0);
     for (auto *v : vs) {
       s.original[s.originalCount++] = vcg::tri::Index(m, v);
@@ -84,12 +82,13 @@ SplitPlan planSplits(MeshType &m, MeshLabels<MeshType> &labels) {
       // The face listed first creates the shared vertex; the other reuses it.
       if (twin >= 0 && std::size_t(twin) < k)
         sf.edgeVertex[i] = plan.faces[twin].edgeVertex[f->FFi(i)];
-      else
-        sf.edgeVertex[i] =
-            addVertex({f->cV(i), f->cV((i + 1) % 3)}, labels.normal[f] + labels.normal[g]);
+      else {
+        sf.edgeVertex[i] = addVertex({f->cV(i), f->cV((i + 1) % 3)});
+        plan.inserted.back().chamferNormal = labels.normal[f] + labels.normal[g];
+      }
     }
     if (labels.face[f] == FaceLabel::Corner) {
-      sf.centerVertex = addVertex({f->cV(0), f->cV(1), f->cV(2)}, labels.normal[f]);
+      sf.centerVertex = addVertex({f->cV(0), f->cV(1), f->cV(2)});
     } else {
       const int free = sf.edgeVertex[0] < 0 ? 0 : sf.edgeVertex[1] < 0 ? 1 : 2;
       if (sf.edgeVertex[(free + 1) % 3] >= 0 && sf.edgeVertex[(free + 2) % 3] >= 0) {

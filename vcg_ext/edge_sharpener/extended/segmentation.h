@@ -217,32 +217,28 @@ inline std::size_t openFacesAround(const VertexFaceTable &vf, const std::vector<
 namespace detail {
 
 /// Per region: whether opening the faces around the `marked` vertices would
-/// leave it no interior vertex (one whose faces all stay in it) although its
-/// faces span at least `minLength` (their bounding box's diagonal). Such a
-/// region is a facet narrower than its contacts' rings (of a coarse
-/// cylinder), not a smooth piece of a chamfer band: those are short, and the
-/// bands without an interior vertex were corridors (dropCorridors).
+/// leave it no interior vertex (interiorVertexRegions, with no marked vertex
+/// among its neighbours) although its faces span at least `minLength` (their
+/// bounding box's diagonal). Such a region is a facet narrower than its
+/// contacts' rings (of a coarse cylinder), not a smooth piece of a chamfer
+/// band: those are short, and the bands without an interior vertex were
+/// corridors (dropCorridors).
 template <class MeshType>
 std::vector<char> narrowFacets(const MeshType &m, const VertexFaceTable &vf,
                                const std::vector<char> &marked, const FeatureZones &zones,
-                               double minLength) {
+                               double minLength, bool meshHasBorder) {
   int regions = 0;
   for (const int r : zones.faceRegion) regions = std::max(regions, r + 1);
   std::vector<char> narrow(regions, 0);
   if (!(minLength > 0)) return narrow;
+  const std::vector<int> vertexRegion = interiorVertexRegions(m, vf, zones, meshHasBorder);
   std::vector<char> survives(regions, 0);
-  const std::size_t nv = m.vert.size();
-  for (std::size_t v = 0; v < nv; ++v) {
-    if (vf.degree(v) == 0 || marked[v]) continue;
-    const int r = zones.faceRegion[*vf.begin(v)];
-    if (r == kZone || survives[r]) continue;
-    bool interior = true;
-    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v) && interior; ++fi) {
-      const auto &f = m.face[*fi];
-      interior = zones.faceRegion[*fi] == r;
-      for (int k = 0; k < 3 && interior; ++k) interior = !marked[vcg::tri::Index(m, f.cV(k))];
-    }
-    survives[r] = interior;
+  for (std::size_t v = 0; v < vertexRegion.size(); ++v) {
+    const int r = vertexRegion[v];
+    if (r == kZone || survives[r] || marked[v]) continue;
+    bool clear = true;
+    forEachNeighbour(m, vf, v, [&](std::size_t u) { clear = clear && !marked[u]; });
+    survives[r] = clear;
   }
   std::vector<vcg::Box3<double>> extent(regions);
   for (std::size_t f = 0; f < m.face.size(); ++f) {
@@ -263,11 +259,13 @@ std::vector<char> narrowFacets(const MeshType &m, const VertexFaceTable &vf,
 /// turns it back into a zone to sharpen. A narrow facet (detail::narrowFacets,
 /// at least `minFacetLength` long) keeps its faces: opened, it would vanish
 /// and the planes beside it would be extrapolated across it.
+/// `meshHasBorder` as for segmentRegions.
 /// \return the number of faces returned to the zone; `keptFacets` counts
 ///         the narrow facets kept.
 template <class MeshType>
 std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, FeatureZones &zones,
-                               double minFacetLength, std::size_t &keptFacets) {
+                               double minFacetLength, std::size_t &keptFacets,
+                               bool meshHasBorder = true) {
   const std::int64_t nv = std::int64_t(m.vert.size());
   std::vector<char> contact(nv, 0);
 #pragma omp parallel for schedule(static, 8192) if (nv > kParallelMin)
@@ -280,7 +278,8 @@ std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, Fea
       if (seen != r) contact[v] = 1;
     }
   }
-  const std::vector<char> narrow = detail::narrowFacets(m, vf, contact, zones, minFacetLength);
+  const std::vector<char> narrow =
+      detail::narrowFacets(m, vf, contact, zones, minFacetLength, meshHasBorder);
   keptFacets = std::size_t(std::count(narrow.begin(), narrow.end(), 1));
   return openFacesAround(vf, contact, zones, narrow);
 }
