@@ -395,6 +395,7 @@ def make_input(server, model, spec, cache, refresh, timeout, tools_for_local=Non
     if server is None:
         return None, {"status": "skipped", "why": "meshlabserver not available"}
     inputs = [model.source, model.source] if spec.kind == "csg" else [model.source]
+    os.makedirs(os.path.dirname(out), exist_ok=True)  # MeshLab does not make it
     workdir = os.path.join(cache, "work", key)
     ok, seconds, why = server.run(inputs, out, mlx_for(spec, model.diag), workdir, timeout)
     if not ok and ("no output" in why or "empty mesh" in why):  # seen once in a while: retry
@@ -465,6 +466,7 @@ def make_peer_output(server, model, spec, in_path, cache, refresh, timeout):
     if server is None:
         return None, {"status": "skipped", "why": "meshlabserver not available"}
     out = os.path.join(cache, "inputs", key + ".ply")
+    os.makedirs(os.path.dirname(out), exist_ok=True)  # MeshLab does not make it
     workdir = os.path.join(cache, "work", key)
     ok, seconds, why = server.run([in_path], out, meshlab.script(meshlab.unsharp_mask_geometry()),
                                   workdir, timeout)
