@@ -98,6 +98,8 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"zone_reverted", r.evidence.zoneReverted},
                      {"refused_fraction", r.evidence.refusedFraction},
                      {"median_lift", r.evidence.medianLift},
+                     {"noise_spacings", r.evidence.noiseSpacings},
+                     {"planar_fraction", r.evidence.planarFraction},
                      {"whole_mesh_left", r.evidence.wholeMeshLeft},
                      {"faces_given_back", r.evidence.facesGivenBack},
                      {"resting_vertices_removed", r.evidence.restingVerticesRemoved},

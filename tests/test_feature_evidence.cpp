@@ -4,6 +4,8 @@
 // edge reaches its corners, and the mesh-wide gate; no mesh needed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "edge_sharpener/guards/feature_evidence.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "hand_built_meshes.h"
@@ -11,6 +13,8 @@
 namespace es = edge_sharpener;
 
 namespace {
+/// A scan-like surface: the general refused bound applies (refusedBound).
+const es::SurfaceMeasures kRoughSurface{/*noiseSpacings=*/1.0, /*planarFraction=*/0.0};
 
 es::InsertedVertexSource edgeVertex(std::size_t a, std::size_t b) {
   es::InsertedVertexSource s;
@@ -201,11 +205,11 @@ TEST(FeatureEvidence, AWeakEdgeTakesItsCornerButNotTheOtherEdge) {
   features[b] = feature(3, 3);
   features[corner] = feature(1, 1, 0, true);
   es::SharpenOptions opt;
-  auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, opt);
+  auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt);
   EXPECT_FALSE(weak[a] || weak[b] || weak[corner]);
 
   features[a] = feature(4, 4, /*offPlane=*/1.0);  // a sample of strip A lies off its plane
-  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, opt);
+  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt);
   EXPECT_TRUE(weak[a]);
   EXPECT_TRUE(weak[corner]);
   EXPECT_FALSE(weak[b]);
@@ -219,8 +223,33 @@ TEST(FeatureEvidence, TooManyRefusalsLeaveTheWholeMesh) {
   opt.maxRefusedFraction = 0.4;
   opt.maxFeatureFallbackFraction = 1;        // strip B alone would pass
   features[featureOf[4]] = feature(30, 10);  // 20 of 35 refused overall
-  const auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, opt);
+  const auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt);
   for (char w : weak) EXPECT_TRUE(w);
+}
+
+TEST(FeatureEvidence, SmoothPartsMadeOfPlanesAreJudgedFeatureByFeature) {
+  TwoStripsAndACorner t;
+  std::vector<es::Feature> features;
+  const auto featureOf = t.groupAllMoved(features);
+  es::SharpenOptions opt;
+  opt.maxRefusedFraction = 0.4;
+  opt.maxRefusedFractionSmooth = 0.6;
+  opt.maxSmoothNoiseSpacings = 0.02;
+  opt.minPlanarAreaFraction = 0.3;
+  opt.maxFeatureFallbackFraction = 1;        // every feature alone would pass
+  features[featureOf[4]] = feature(30, 10);  // 20 of 35 refused overall: above 0.4, below 0.6
+  const auto allWeak = [&](const es::SurfaceMeasures &surface) {
+    const auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, surface, opt);
+    return std::all_of(weak.begin(), weak.end(), [](char w) { return w != 0; });
+  };
+  EXPECT_FALSE(allWeak({/*noiseSpacings=*/0.01, /*planarFraction=*/0.5}));
+  EXPECT_TRUE(allWeak({/*noiseSpacings=*/0.03, /*planarFraction=*/0.5}));  // rough: a scan
+  EXPECT_TRUE(allWeak({/*noiseSpacings=*/0.01, /*planarFraction=*/0.1}));  // freeform
+  opt.maxSmoothNoiseSpacings = 0;                                          // off
+  EXPECT_TRUE(allWeak({/*noiseSpacings=*/0.0, /*planarFraction=*/1.0}));
+  opt.maxSmoothNoiseSpacings = 0.02;
+  features[featureOf[4]] = feature(30, 5);  // 25 of 35 refused: above the smooth bound too
+  EXPECT_TRUE(allWeak({/*noiseSpacings=*/0.01, /*planarFraction=*/0.5}));
 }
 
 TEST(FeatureEvidence, MovesThatOnlySlideLeaveTheWholeMesh) {
@@ -228,10 +257,13 @@ TEST(FeatureEvidence, MovesThatOnlySlideLeaveTheWholeMesh) {
   std::vector<es::Feature> features;
   const auto featureOf = t.groupAllMoved(features);
   es::SharpenOptions opt;  // median lift at least 0.07
-  for (char w : es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.8, opt)) EXPECT_FALSE(w);
-  for (char w : es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, opt)) EXPECT_TRUE(w);
+  for (char w : es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.8, kRoughSurface, opt))
+    EXPECT_FALSE(w);
+  for (char w : es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt))
+    EXPECT_TRUE(w);
   opt.minMedianLift = 0;  // off
-  for (char w : es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, opt)) EXPECT_FALSE(w);
+  for (char w : es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt))
+    EXPECT_FALSE(w);
 }
 
 TEST(FeatureEvidence, MedianLiftCountsOnlyTheMoves) {

@@ -39,6 +39,9 @@ int main(int argc, char **argv) {
     es::FeatureZones zones;
     es::detail::detect(m, labels, opt, report, zones);
     const es::InputFaces<es::Mesh> inputFaces(m);
+    const es::SurfaceMeasures measures =
+        es::measureSurface(m, zones.inputFaces, inputFaces.faceVertices(), zones.faceRegion,
+                           zones.support.sampleSpacing);
     const es::SplitPlan plan = es::planSplits(m, labels);
     report.subdivision = es::subdivide(m, plan, labels);
     es::VertexMoves<es::Mesh> moves(m, plan, labels, true);
@@ -46,8 +49,8 @@ int main(int argc, char **argv) {
     es::refineExtendedPlacement(m, moves, zones, opt, report);
     // The evidence as the guard sees it (before the cleanup); the harm after every guard.
     const es::InputSurface surface{zones.inputFaces, inputFaces.faceVertices()};
-    es::EvidenceGuard<es::Mesh> guard(m, moves, zones.support, surface, report.longestInputEdge,
-                                      opt);
+    es::EvidenceGuard<es::Mesh> guard(m, moves, zones.support, surface, measures,
+                                      report.longestInputEdge, opt);
     const auto judged = guard.judge();
     const std::vector<es::Feature> &features = guard.features();
     const std::vector<std::uint32_t> &featureOf = guard.featureOf();
@@ -101,16 +104,19 @@ int main(int argc, char **argv) {
       const es::Feature &f = features[c];
       if (f.moved == 0) continue;
       std::printf(
-          "{\"case\": \"%s\", \"refused\": %.4f, \"mesh_lift\": %.4f, \"feature\": %zu, "
+          "{\"case\": \"%s\", \"refused\": %.4f, \"mesh_lift\": %.4f, \"noise\": %.4f, \"planar\": "
+          "%.4f, "
+          "\"feature\": %zu, "
           "\"corner\": %d, "
           "\"vertices\": %zu, \"moved\": %zu, "
           "\"max_off_plane\": %.4f, \"median_displacement\": %.4f, "
           "\"median_lift\": %.4f, \"weak\": %d, \"harm_sum\": %.5f, \"harm_max\": %.5f, "
           "\"before_sum\": %.5f, \"flank_angle_deg\": %.2f, \"line_chamfer_angle_deg\": %.2f, "
           "\"crossed\": %zu}\n",
-          name.c_str(), refused, judged.stats.medianLift, c, int(f.corner), f.vertices, f.moved,
-          f.maxOffPlane, es::detail::medianOf(moveLengths[c]), es::medianLift(featureLifts[c]),
-          int(weak[c]), sum[c], worst[c], before[c], f.flankAngleRad * 180 / M_PI,
+          name.c_str(), refused, judged.stats.medianLift, judged.stats.noiseSpacings,
+          judged.stats.planarFraction, c, int(f.corner), f.vertices, f.moved, f.maxOffPlane,
+          es::detail::medianOf(moveLengths[c]), es::medianLift(featureLifts[c]), int(weak[c]),
+          sum[c], worst[c], before[c], f.flankAngleRad * 180 / M_PI,
           f.lineChamferAngleRad * 180 / M_PI, f.crossed);
     }
   } catch (const std::exception &e) {

@@ -259,6 +259,23 @@ inline const std::vector<OptionSpec> &optionTable() {
        "chamfered sampling of sharp edges: a scan, a model already sharp, a smooth shape).",
        T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_REAL(maxRefusedFraction)},
+      {"max_refused_fraction_smooth", "--max-refused-smooth", "", "Refused fraction, smooth",
+       "Auto method: the refused fraction's bound on a smooth part made of planes (see "
+       "--smooth-noise and --min-planar-area), where refusals come from the shape and the "
+       "per-feature evidence judges each feature.",
+       T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_REAL(maxRefusedFractionSmooth)},
+      {"max_smooth_noise_spacings", "--smooth-noise", "", "Smooth surface noise",
+       "Auto method: a surface counts as smooth when the median change of its vertices' "
+       "umbrella curvature from their neighbours' is at most this (a remeshed or reconstructed "
+       "solid; a fused scan is rougher; 0: no surface counts as smooth).",
+       T::Real, G::EvidenceGuard, "median edge lengths", 0, 10, false, kNotInMeshLab, {}, {},
+       ES_REAL(maxSmoothNoiseSpacings)},
+      {"min_planar_area_fraction", "--min-planar-area", "", "Minimum planar area",
+       "Auto method: the share of the surface that must lie on planes (faces within 3 degrees "
+       "of their smooth region's mean normal) for the smooth bound to apply.",
+       T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_REAL(minPlanarAreaFraction)},
       {"min_median_lift", "--min-lift", "", "Minimum median lift",
        "Auto method: nothing is sharpened when the moves mostly slide along the input's surface "
        "instead of lifting it to sharp edges: the median distance of the new vertices' targets "

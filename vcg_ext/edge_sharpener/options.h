@@ -142,6 +142,16 @@ struct SharpenOptions {
   /// the inserted vertices of the features placement moved at all
   /// (feature_evidence.h: refusedFraction).
   double maxRefusedFraction = 0.4;
+  /// ...or this fraction on a smooth part made of planes: an input whose
+  /// noise is at most `maxSmoothNoiseSpacings` sample spacings and whose
+  /// planar share is at least `minPlanarAreaFraction` (surface_measures.h).
+  /// There the refusals come from the shape (a rounded blend, a thin part),
+  /// which the per-feature evidence sorts out; on a rough surface (a scan)
+  /// they come from the noise, on a freeform part from curved faces.
+  double maxRefusedFractionSmooth = 0.6;
+  /// 0: no input counts as smooth.
+  double maxSmoothNoiseSpacings = 0.018;
+  double minPlanarAreaFraction = 0.3;
   /// A feature goes back to rest whole when more than this fraction of its
   /// inserted vertices were refused by the other tests or moved across to
   /// another sheet of the input (feature_evidence.h: crossesSheet): the

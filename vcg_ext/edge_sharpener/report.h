@@ -87,6 +87,8 @@ struct EvidenceStats {
   std::size_t zoneReverted = 0;    ///< projected zone vertices sent back
   double refusedFraction = 0;      ///< of the moved features' vertices, those refused
   double medianLift = 1;           ///< how far the moves lift the surface, per unit of length
+  double noiseSpacings = 0;        ///< the input surface's noise (surfaceNoiseSpacings)
+  double planarFraction = 0;       ///< the input's share of area on planes
   bool wholeMeshLeft = false;      ///< too many refused, or too little lift: nothing sharpened
   std::size_t facesGivenBack = 0;  ///< split faces at rest back to their input face (fanned)
   std::size_t restingVerticesRemoved = 0;  ///< other inserted vertices at rest, merged away
@@ -186,7 +188,9 @@ inline void formatGuards(std::ostream &s, const SharpenReport &r) {
       << " features left as they were (" << r.evidence.reverted << " inserted and "
       << r.evidence.zoneReverted << " zone vertices sent back); "
       << int(std::lround(100 * r.evidence.refusedFraction)) << "% of the moves refused, "
-      << "median lift " << std::lround(100 * r.evidence.medianLift) / 100.0
+      << "median lift " << std::lround(100 * r.evidence.medianLift) / 100.0 << ", noise "
+      << std::lround(1000 * r.evidence.noiseSpacings) / 1000.0 << " spacings, "
+      << int(std::lround(100 * r.evidence.planarFraction)) << "% of the area on planes"
       << (r.evidence.wholeMeshLeft ? ": too little evidence, the mesh is left as it was" : "")
       << "; " << r.evidence.facesGivenBack << " split faces at rest given back their input face, "
       << r.evidence.restingVerticesRemoved << " other inserted vertices at rest removed\n";

@@ -134,7 +134,12 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
 
   detail::reportProgress(opt, 40, "Edge-Sharpener: subdivision");
   std::optional<InputFaces<MeshType>> input;  // the auto method may give it back whole
-  if (opt.method == Method::Auto) input.emplace(m);
+  SurfaceMeasures surface;
+  if (opt.method == Method::Auto) {
+    input.emplace(m);
+    surface = measureSurface(m, zones.inputFaces, input->faceVertices(), zones.faceRegion,
+                             zones.support.sampleSpacing);
+  }
   const SplitPlan plan = planSplits(m, labels);
   report.subdivision = subdivide(m, plan, labels);
   VertexMoves<MeshType> moves(m, plan, labels, usesFeatureZones(opt.method));
@@ -145,7 +150,7 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   std::optional<EvidenceGuard<MeshType>> evidence;
   if (input) {
     evidence.emplace(m, moves, zones.support, InputSurface{zones.inputFaces, input->faceVertices()},
-                     report.longestInputEdge, opt);
+                     surface, report.longestInputEdge, opt);
     report.evidenceGuard = true;
     report.evidence = evidence->revertWeakFeatures();
   }

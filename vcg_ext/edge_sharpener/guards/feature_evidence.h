@@ -11,7 +11,10 @@
 // feature. Where the tests refuse a large part of all the moves, the input
 // is not a chamfered sampling of sharp edges at all (a depth scan's fused
 // surface), and where the moves mostly slide along the input instead of
-// lifting it to an edge, the input is already sharp: nothing moves.
+// lifting it to an edge, the input is already sharp: nothing moves. A
+// smooth part made of planes (surface_measures.h) may refuse more before
+// that: its refusals come from its shape, which the per-feature evidence
+// judges feature by feature.
 #pragma once
 
 #include <vcg/complex/complex.h>
@@ -33,6 +36,7 @@
 #include "../util/vertex_faces.h"
 #include "box_hash_grid.h"
 #include "element_snapshot.h"
+#include "surface_measures.h"
 #include "vertex_moves.h"
 
 namespace edge_sharpener {
@@ -349,12 +353,25 @@ inline double refusedFraction(const std::vector<Feature> &features) {
   return vertices == 0 ? 0.0 : double(vertices - moved) / double(vertices);
 }
 
+/// The refused fraction above which nothing is sharpened: the bound for a
+/// smooth part made of planes (surface_measures.h) where the input's noise
+/// is at most `maxSmoothNoiseSpacings` and its planar share at least
+/// `minPlanarAreaFraction`, else the general one.
+inline double refusedBound(const SurfaceMeasures &surface, const SharpenOptions &opt) {
+  const bool smoothPlanes = opt.maxSmoothNoiseSpacings > 0 &&
+                            surface.noiseSpacings <= opt.maxSmoothNoiseSpacings &&
+                            surface.planarFraction >= opt.minPlanarAreaFraction;
+  return smoothPlanes ? std::max(opt.maxRefusedFraction, opt.maxRefusedFractionSmooth)
+                      : opt.maxRefusedFraction;
+}
+
 /// Whether the mesh as a whole shows too little evidence to sharpen any of
-/// it: the tests refused too many of the moves (refusedFraction), or the
-/// moves mostly slide along the input instead of lifting it (medianLift):
-/// a model already sharp.
-inline bool meshEvidenceIsWeak(double refused, double lift, const SharpenOptions &opt) {
-  return refused > opt.maxRefusedFraction || lift < opt.minMedianLift;
+/// it: the tests refused too many of the moves (refusedFraction, against
+/// refusedBound), or the moves mostly slide along the input instead of
+/// lifting it (medianLift): a model already sharp.
+inline bool meshEvidenceIsWeak(double refused, double lift, const SurfaceMeasures &surface,
+                               const SharpenOptions &opt) {
+  return refused > refusedBound(surface, opt) || lift < opt.minMedianLift;
 }
 
 /// Per feature, whether its moves go back: every feature when the mesh as a
@@ -363,8 +380,8 @@ inline bool meshEvidenceIsWeak(double refused, double lift, const SharpenOptions
 /// whose edges' is (a corner is where its edges meet).
 inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<Feature> &features,
                                       const std::vector<std::uint32_t> &featureOf, double lift,
-                                      const SharpenOptions &opt) {
-  if (meshEvidenceIsWeak(refusedFraction(features), lift, opt))
+                                      const SurfaceMeasures &surface, const SharpenOptions &opt) {
+  if (meshEvidenceIsWeak(refusedFraction(features), lift, surface, opt))
     return std::vector<char>(features.size(), 1);
   std::vector<char> weak(features.size(), 0);
   for (std::size_t c = 0; c < features.size(); ++c)
@@ -391,11 +408,13 @@ class EvidenceGuard {
  public:
   /// \pre placement (and the extended refinement) has run.
   EvidenceGuard(MeshType &m, VertexMoves<MeshType> &moves, const SupportPlanes &support,
-                const InputSurface &input, double longestInputEdge, const SharpenOptions &opt)
+                const InputSurface &input, const SurfaceMeasures &surface, double longestInputEdge,
+                const SharpenOptions &opt)
       : m_(m),
         moves_(moves),
         support_(support),
         input_(input),
+        surface_(surface),
         longestInputEdge_(longestInputEdge),
         opt_(opt) {
     const auto regionOf = [&](std::size_t v) -> long {
@@ -420,11 +439,14 @@ class EvidenceGuard {
     stats.refusedFraction = refusedFraction(features_);
     out.lifts = liftsOfMoves(m_, moves_, input_);
     stats.medianLift = medianLift(out.lifts);
-    stats.wholeMeshLeft = meshEvidenceIsWeak(stats.refusedFraction, stats.medianLift, opt_);
+    stats.noiseSpacings = surface_.noiseSpacings;
+    stats.planarFraction = surface_.planarFraction;
+    stats.wholeMeshLeft =
+        meshEvidenceIsWeak(stats.refusedFraction, stats.medianLift, surface_, opt_);
     if (!stats.wholeMeshLeft)
       countSheetCrossings(m_, moves_, support_, out.lifts, featureOf_, longestInputEdge_,
                           features_);
-    out.weak = weakFeatures(moves_.plan(), features_, featureOf_, stats.medianLift, opt_);
+    out.weak = weakFeatures(moves_.plan(), features_, featureOf_, stats.medianLift, surface_, opt_);
     for (std::size_t c = 0; c < features_.size(); ++c)
       stats.weakFeatures += out.weak[c] && features_[c].moved > 0;
     return out;
@@ -467,7 +489,7 @@ class EvidenceGuard {
                                 EvidenceStats &stats) {
     countFeatureMoves(m_, moves_, featureOf_, features_);
     const double refused = refusedFraction(features_);
-    if (!(refused > opt_.maxRefusedFraction)) return false;
+    if (!(refused > refusedBound(surface_, opt_))) return false;
     beforeGuards.restore(m_, moves_.labels());
     stats.refusedFraction = refused;
     stats.wholeMeshLeft = true;
@@ -491,6 +513,7 @@ class EvidenceGuard {
   VertexMoves<MeshType> &moves_;
   const SupportPlanes &support_;
   InputSurface input_;
+  SurfaceMeasures surface_;
   double longestInputEdge_;
   const SharpenOptions &opt_;
   std::vector<Feature> features_;

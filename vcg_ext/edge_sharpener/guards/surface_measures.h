@@ -1,0 +1,160 @@
+// Two measures of the input's surface as a whole, read by the auto method's
+// evidence guard (feature_evidence.h: refusedBound).
+//
+// Noise: a remesher, a marching-cubes extraction of an exact distance field
+// or a Poisson reconstruction from exact points leave a surface whose
+// curvature varies slowly from one vertex to the next (zero on a plane,
+// nearly constant on a cylinder); a depth scan fused in a volume leaves bumps
+// one sample wide (the fusion's ripples and the depth noise).
+//
+// Planar area: the share of the surface lying on planes. Sharpening
+// extrapolates planes; on a part made of planes meeting at chamfered edges,
+// a feature whose tests agree is what it seems, while on a freeform part
+// (fillets, blends) the same agreement can come from a curved face.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "../util/geometry.h"
+#include "../util/vertex_faces.h"
+
+namespace edge_sharpener {
+
+/// Calls `visit(u)` for each other vertex u of each face of vertex v: each
+/// neighbour of an inner vertex twice (the two faces of their edge).
+template <class Visit>
+void forEachFaceNeighbour(std::size_t v, const VertexFaceTable &facesOf,
+                          const std::vector<std::array<std::uint32_t, 3>> &faces, Visit &&visit) {
+  for (const std::uint32_t *f = facesOf.begin(v); f != facesOf.end(v); ++f)
+    for (std::uint32_t u : faces[*f])
+      if (u != v) visit(u);
+}
+
+/// One vertex's umbrella curvature: the component, along its area-weighted
+/// normal, of the offset from the vertex to the mean of its neighbours
+/// (forEachFaceNeighbour). Zero on a plane; about the mean curvature times
+/// the squared spacing on a smooth surface. 0 for a vertex without faces
+/// or normal. `positionOf(v)` gives vertex v's position. Pure.
+template <class PositionOf>
+double umbrellaCurvature(std::size_t v, const VertexFaceTable &facesOf,
+                         const std::vector<std::array<std::uint32_t, 3>> &faces,
+                         PositionOf &&positionOf) {
+  Vec3 normal(0, 0, 0), sum(0, 0, 0);
+  for (const std::uint32_t *f = facesOf.begin(v); f != facesOf.end(v); ++f) {
+    const auto &t = faces[*f];
+    const Vec3 a = positionOf(t[0]), b = positionOf(t[1]), c = positionOf(t[2]);
+    normal += (b - a) ^ (c - a);
+    sum += a + b + c;
+  }
+  const std::size_t count = 2 * facesOf.degree(v);
+  const double length = normal.Norm();
+  if (count == 0 || !(length > 0)) return 0;
+  const Vec3 p = positionOf(v);
+  const Vec3 mean = (sum - p * double(count / 2)) / double(count);
+  return (mean - p) * normal / length;
+}
+
+/// The surface's noise in units of `spacing`: the median, over every
+/// `stride`-th vertex with faces, of how far its umbrella curvature differs
+/// from its neighbours' mean. Slowly varying curvature cancels; bumps one
+/// sample wide do not. 0 without such a vertex. Pure.
+/// \pre stride >= 1, spacing > 0.
+template <class PositionOf>
+double surfaceNoiseSpacings(std::size_t vertexCount, const VertexFaceTable &facesOf,
+                            const std::vector<std::array<std::uint32_t, 3>> &faces,
+                            PositionOf &&positionOf, double spacing, std::size_t stride) {
+  // One entry per sampled vertex, each written by one thread: the same
+  // median for any thread count. NaN: a vertex without faces.
+  const std::int64_t count = std::int64_t((vertexCount + stride - 1) / stride);
+  std::vector<double> noise(std::size_t(count), std::nan(""));
+#pragma omp parallel for schedule(static, 256) if (count > 4096)
+  for (std::int64_t k = 0; k < count; ++k) {
+    const std::size_t v = std::size_t(k) * stride;
+    if (facesOf.degree(v) == 0) continue;
+    double around = 0;
+    forEachFaceNeighbour(v, facesOf, faces, [&](std::uint32_t u) {
+      around += umbrellaCurvature(u, facesOf, faces, positionOf);
+    });
+    around /= double(2 * facesOf.degree(v));
+    noise[std::size_t(k)] = std::abs(umbrellaCurvature(v, facesOf, faces, positionOf) - around);
+  }
+  noise.erase(std::remove_if(noise.begin(), noise.end(), [](double x) { return std::isnan(x); }),
+              noise.end());
+  if (noise.empty()) return 0;
+  auto mid = noise.begin() + noise.size() / 2;
+  std::nth_element(noise.begin(), mid, noise.end());
+  return *mid / spacing;
+}
+
+/// The share of the surface's area lying on planes: per region (`regionOf`
+/// per face, negative: none), the faces whose normal lies within
+/// `maxAngleRad` of the region's area-weighted mean normal. A flat region
+/// counts whole; a curved one only the faces near its mean direction.
+/// `areaVector[f]` is face f's normal times twice its area. Pure.
+inline double planarAreaFraction(const std::vector<Vec3> &areaVector,
+                                 const std::vector<int> &regionOf, double maxAngleRad) {
+  int regions = 0;
+  for (int r : regionOf) regions = std::max(regions, r + 1);
+  std::vector<Vec3> sum(std::size_t(regions), Vec3(0, 0, 0));
+  double total = 0;
+  for (std::size_t f = 0; f < areaVector.size(); ++f) {
+    total += areaVector[f].Norm();
+    if (regionOf[f] >= 0) sum[std::size_t(regionOf[f])] += areaVector[f];
+  }
+  if (!(total > 0)) return 0;
+  const double minCos = std::cos(maxAngleRad);
+  double planar = 0;
+  for (std::size_t f = 0; f < areaVector.size(); ++f) {
+    if (regionOf[f] < 0) continue;
+    const Vec3 &mean = sum[std::size_t(regionOf[f])];
+    const double area = areaVector[f].Norm(), meanNorm = mean.Norm();
+    if (area > 0 && meanNorm > 0 && areaVector[f] * mean >= minCos * area * meanNorm)
+      planar += area;
+  }
+  return planar / total;
+}
+
+/// A region's face lies on its plane within this angle (radians) of the
+/// region's mean normal: well above a plane's sampling noise, well below
+/// the turn of a curved region over a few samples.
+constexpr double kPlanarAngleRad = 3.0 * M_PI / 180.0;
+
+/// Both measures of an input mesh.
+struct SurfaceMeasures {
+  double noiseSpacings = 0;   ///< surfaceNoiseSpacings
+  double planarFraction = 0;  ///< planarAreaFraction
+};
+
+/// The input mesh's measures: `faces` its faces as vertex triples, `facesOf`
+/// each vertex's faces, `faceRegion` each face's smooth region (negative:
+/// none), `spacing` its sample spacing. Both from an even sample of about
+/// `samples` vertices and faces: a statistic of the whole surface.
+template <class MeshType>
+SurfaceMeasures measureSurface(const MeshType &m, const VertexFaceTable &facesOf,
+                               const std::vector<std::array<std::uint32_t, 3>> &faces,
+                               const std::vector<int> &faceRegion, double spacing,
+                               std::size_t samples = 5000) {
+  SurfaceMeasures out;
+  const auto at = [&](std::size_t v) { return positionOf(&m.vert[v]); };
+  const std::size_t n = m.vert.size();
+  if (spacing > 0)
+    out.noiseSpacings =
+        surfaceNoiseSpacings(n, facesOf, faces, at, spacing, std::max<std::size_t>(1, n / samples));
+  std::vector<Vec3> areaVector;
+  std::vector<int> regionOf;
+  const std::size_t stride = std::max<std::size_t>(1, faces.size() / samples);
+  for (std::size_t f = 0; f < faces.size(); f += stride) {
+    const Vec3 a = at(faces[f][0]), b = at(faces[f][1]), c = at(faces[f][2]);
+    areaVector.push_back((b - a) ^ (c - a));
+    regionOf.push_back(faceRegion[f]);
+  }
+  out.planarFraction = planarAreaFraction(areaVector, regionOf, kPlanarAngleRad);
+  return out;
+}
+
+}  // namespace edge_sharpener
