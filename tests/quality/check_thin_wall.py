@@ -12,7 +12,6 @@ and at CSG 1%, where the inner facets' edges are restored, the RMS error falls b
 MIN_CSG_RMS_FACTOR (measured x2.04 when this test was written).
 """
 import checks  # first: puts bench/quality on sys.path
-import families
 
 MULTIPLIER = 2.0
 MIN_CSG_RMS_FACTOR = 1.5
@@ -20,27 +19,14 @@ EXPECTED = {("vdb", "1%"), ("csg", "1%")}
 
 
 def main():
-    results = checks.load_results()
-    failures, seen = [], set()
-    for c in results["cases"]:
-        name = f"{c['model']} {c['input']} {c['resolution']}"
-        if c["make"]["status"] != "ok" or "before" not in c:
-            failures.append(f"{name}: input not made: {c['make'].get('why', c['make']['status'])}")
-            continue
-        runs = [r for r in c["runs"] if r["method"] == "auto" and r.get("multiplier") == MULTIPLIER]
-        if len(runs) != 1 or runs[0]["status"] != "ok":
-            failures.append(f"{name}: the default method did not run: {runs}")
-            continue
-        seen.add((c["input"], c["resolution"]))
-        before, after = c["before"], runs[0]["after"]
-        print(f"  {name:16s} max {before['max']:.4f} -> {after['max']:.4f}  "
-              f"RMS {before['rms']:.5f} -> {after['rms']:.5f}")
-        if families.is_worse(before, after):
-            failures.append(f"{name}: worse (max {before['max']:.4g} -> {after['max']:.4g}, "
-                            f"RMS {before['rms']:.4g} -> {after['rms']:.4g})")
+    failures = []
+    outcomes = checks.default_method_outcomes(checks.load_results()["cases"], failures,
+                                              MULTIPLIER, width=16)
+    for c, before, after in outcomes:
         if c["input"] == "csg" and before["rms"] < MIN_CSG_RMS_FACTOR * after["rms"]:
-            failures.append(f"{name}: RMS x{before['rms'] / after['rms']:.2f} < "
-                            f"x{MIN_CSG_RMS_FACTOR}")
+            failures.append(f"{c['model']} {c['input']} {c['resolution']}: RMS "
+                            f"x{before['rms'] / after['rms']:.2f} < x{MIN_CSG_RMS_FACTOR}")
+    seen = {(c["input"], c["resolution"]) for c, _, _ in outcomes}
     if seen != EXPECTED:
         failures.append(f"measured {sorted(seen)}, expected {sorted(EXPECTED)}")
     checks.finish(failures, "thin wall: the default method made neither input worse")

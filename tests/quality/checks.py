@@ -32,6 +32,31 @@ def rel(a, b):
     return abs(a - b) / max(abs(b), 1e-30)
 
 
+def default_method_outcomes(cases, failures, multiplier=2.0, width=28):
+    """(case, before, after) of every case whose input was made and on which the default
+    method (auto) ran at `multiplier`, each printed; failures appended for the others and for
+    outputs worse than their input (families.is_worse: max up > 2% or RMS up > 1%)."""
+    import families
+    out = []
+    for c in cases:
+        name = f"{c['model']} {c['input']} {c['resolution']}"
+        if c["make"]["status"] != "ok" or "before" not in c:
+            failures.append(f"{name}: input not made: {c['make'].get('why', c['make']['status'])}")
+            continue
+        runs = [r for r in c["runs"] if r["method"] == "auto" and r.get("multiplier") == multiplier]
+        if len(runs) != 1 or runs[0]["status"] != "ok":
+            failures.append(f"{name}: the default method did not run: {runs}")
+            continue
+        before, after = c["before"], runs[0]["after"]
+        print(f"  {name:{width}s} max {before['max']:.4f} -> {after['max']:.4f}  "
+              f"RMS {before['rms']:.5f} -> {after['rms']:.5f}")
+        if families.is_worse(before, after):
+            failures.append(f"{name}: worse (max {before['max']:.4g} -> {after['max']:.4g}, "
+                            f"RMS {before['rms']:.4g} -> {after['rms']:.4g})")
+        out.append((c, before, after))
+    return out
+
+
 # --------------------------------------------------------------------------- MeshLab cross-checks
 def meshlab_setup(shapes):
     """(run.Tools, meshlab.Server, work directory) with the generated shapes `shapes` (exact
