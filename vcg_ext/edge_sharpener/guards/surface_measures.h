@@ -69,9 +69,9 @@ double surfaceNoiseSpacings(std::size_t vertexCount, const VertexFaceTable &face
                             const std::vector<std::array<std::uint32_t, 3>> &faces,
                             PositionOf &&positionOf, double spacing, std::size_t stride) {
   // One entry per sampled vertex, each written by one thread: the same
-  // median for any thread count. NaN: a vertex without faces.
+  // median for any thread count. Negative: a vertex without faces.
   const std::int64_t count = std::int64_t((vertexCount + stride - 1) / stride);
-  std::vector<double> noise(std::size_t(count), std::nan(""));
+  std::vector<double> noise(std::size_t(count), -1.0);
 #pragma omp parallel for schedule(static, 256) if (count > 4096)
   for (std::int64_t k = 0; k < count; ++k) {
     const std::size_t v = std::size_t(k) * stride;
@@ -83,7 +83,7 @@ double surfaceNoiseSpacings(std::size_t vertexCount, const VertexFaceTable &face
     around /= double(2 * facesOf.degree(v));
     noise[std::size_t(k)] = std::abs(umbrellaCurvature(v, facesOf, faces, positionOf) - around);
   }
-  noise.erase(std::remove_if(noise.begin(), noise.end(), [](double x) { return std::isnan(x); }),
+  noise.erase(std::remove_if(noise.begin(), noise.end(), [](double x) { return x < 0; }),
               noise.end());
   if (noise.empty()) return 0;
   auto mid = noise.begin() + noise.size() / 2;
