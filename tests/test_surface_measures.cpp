@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "edge_sharpener/guards/surface_measures.h"
-#include "edge_sharpener/util/attributes.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "hand_built_meshes.h"
 
@@ -19,14 +18,7 @@ template <class Height>
 double heightFieldNoise(double h, Height &&height) {
   es::Mesh m;
   es::hand_built::heightField(m, 30, 30, h, height);
-  std::vector<std::array<std::uint32_t, 3>> faces;
-  for (const auto &f : m.face)
-    faces.push_back({std::uint32_t(vcg::tri::Index(m, f.cV(0))),
-                     std::uint32_t(vcg::tri::Index(m, f.cV(1))),
-                     std::uint32_t(vcg::tri::Index(m, f.cV(2)))});
-  const es::VertexFaceTable facesOf(m);
-  const auto at = [&](std::size_t v) { return es::positionOf(&m.vert[v]); };
-  return es::surfaceNoiseSpacings(m.vert.size(), facesOf, faces, at, h, 1);
+  return es::surfaceNoiseSpacings(m, es::VertexFaceTable(m), h, 1);
 }
 
 }  // namespace

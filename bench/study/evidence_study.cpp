@@ -40,8 +40,7 @@ int main(int argc, char **argv) {
     es::detail::detect(m, labels, opt, report, zones);
     const es::InputFaces<es::Mesh> inputFaces(m);
     const es::SurfaceMeasures measures =
-        es::measureSurface(m, zones.inputFaces, inputFaces.faceVertices(), zones.faceRegion,
-                           zones.support.sampleSpacing);
+        es::measureSurface(m, zones.inputFaces, zones.faceRegion, zones.support.sampleSpacing);
     const es::SplitPlan plan = es::planSplits(m, labels);
     report.subdivision = es::subdivide(m, plan, labels);
     es::VertexMoves<es::Mesh> moves(m, plan, labels, true);

@@ -137,8 +137,7 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   SurfaceMeasures surface;
   if (opt.method == Method::Auto) {
     input.emplace(m);
-    surface = measureSurface(m, zones.inputFaces, input->faceVertices(), zones.faceRegion,
-                             zones.support.sampleSpacing);
+    surface = measureSurface(m, zones.inputFaces, zones.faceRegion, zones.support.sampleSpacing);
   }
   const SplitPlan plan = planSplits(m, labels);
   report.subdivision = subdivide(m, plan, labels);

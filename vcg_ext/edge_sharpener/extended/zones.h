@@ -26,18 +26,4 @@ struct FeatureZones {
   VertexFaceTable inputFaces;    ///< faces of each vertex, as detection saw them
 };
 
-namespace detail {
-
-/// Neighbouring vertices of v (through its faces), with repetitions.
-template <class MeshType, class Visit>
-void forEachNeighbour(const MeshType &m, const VertexFaceTable &vf, std::size_t v, Visit &&visit) {
-  for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
-    for (int k = 0; k < 3; ++k) {
-      const std::size_t u = vcg::tri::Index(m, m.face[*fi].cV(k));
-      if (u != v) visit(u);
-    }
-}
-
-}  // namespace detail
-
 }  // namespace edge_sharpener

@@ -14,74 +14,60 @@
 #pragma once
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "../util/attributes.h"
 #include "../util/geometry.h"
 #include "../util/vertex_faces.h"
 
 namespace edge_sharpener {
 
-/// Calls `visit(u)` for each other vertex u of each face of vertex v: each
-/// neighbour of an inner vertex twice (the two faces of their edge).
-template <class Visit>
-void forEachFaceNeighbour(std::size_t v, const VertexFaceTable &facesOf,
-                          const std::vector<std::array<std::uint32_t, 3>> &faces, Visit &&visit) {
-  for (const std::uint32_t *f = facesOf.begin(v); f != facesOf.end(v); ++f)
-    for (std::uint32_t u : faces[*f])
-      if (u != v) visit(u);
-}
-
 /// One vertex's umbrella curvature: the component, along its area-weighted
-/// normal, of the offset from the vertex to the mean of its neighbours
-/// (forEachFaceNeighbour). Zero on a plane; about the mean curvature times
-/// the squared spacing on a smooth surface. 0 for a vertex without faces
-/// or normal. `positionOf(v)` gives vertex v's position. Pure.
-template <class PositionOf>
-double umbrellaCurvature(std::size_t v, const VertexFaceTable &facesOf,
-                         const std::vector<std::array<std::uint32_t, 3>> &faces,
-                         PositionOf &&positionOf) {
+/// normal, of the offset from vertex v to the mean of its neighbours
+/// (detail::forEachNeighbour, through its faces in `vf`). Zero on a plane;
+/// about the mean curvature times the squared spacing on a smooth surface.
+/// 0 for a vertex without faces or normal.
+template <class MeshType>
+double umbrellaCurvature(const MeshType &m, const VertexFaceTable &vf, std::size_t v) {
   Vec3 normal(0, 0, 0), sum(0, 0, 0);
-  for (const std::uint32_t *f = facesOf.begin(v); f != facesOf.end(v); ++f) {
-    const auto &t = faces[*f];
-    const Vec3 a = positionOf(t[0]), b = positionOf(t[1]), c = positionOf(t[2]);
+  for (const std::uint32_t *f = vf.begin(v); f != vf.end(v); ++f) {
+    const auto &face = m.face[*f];
+    const Vec3 a = positionOf(face.cV(0)), b = positionOf(face.cV(1)), c = positionOf(face.cV(2));
     normal += (b - a) ^ (c - a);
     sum += a + b + c;
   }
-  const std::size_t count = 2 * facesOf.degree(v);
+  const std::size_t count = 2 * vf.degree(v);  // the neighbours, as forEachNeighbour visits them
   const double length = normal.Norm();
   if (count == 0 || !(length > 0)) return 0;
-  const Vec3 p = positionOf(v);
+  const Vec3 p = positionOf(&m.vert[v]);
   const Vec3 mean = (sum - p * double(count / 2)) / double(count);
   return (mean - p) * normal / length;
 }
 
 /// The surface's noise in units of `spacing`: the median, over every
-/// `stride`-th vertex with faces, of how far its umbrella curvature differs
-/// from its neighbours' mean. Slowly varying curvature cancels; bumps one
-/// sample wide do not. 0 without such a vertex. Pure.
+/// `stride`-th vertex with faces in `vf`, of how far its umbrella curvature
+/// differs from its neighbours' mean. Slowly varying curvature cancels;
+/// bumps one sample wide do not. 0 without such a vertex.
 /// \pre stride >= 1, spacing > 0.
-template <class PositionOf>
-double surfaceNoiseSpacings(std::size_t vertexCount, const VertexFaceTable &facesOf,
-                            const std::vector<std::array<std::uint32_t, 3>> &faces,
-                            PositionOf &&positionOf, double spacing, std::size_t stride) {
+template <class MeshType>
+double surfaceNoiseSpacings(const MeshType &m, const VertexFaceTable &vf, double spacing,
+                            std::size_t stride) {
   // One entry per sampled vertex, each written by one thread: the same
   // median for any thread count. Negative: a vertex without faces.
-  const std::int64_t count = std::int64_t((vertexCount + stride - 1) / stride);
+  const std::int64_t count = std::int64_t((m.vert.size() + stride - 1) / stride);
   std::vector<double> noise(std::size_t(count), -1.0);
 #pragma omp parallel for schedule(static, 256) if (count > 4096)
   for (std::int64_t k = 0; k < count; ++k) {
     const std::size_t v = std::size_t(k) * stride;
-    if (facesOf.degree(v) == 0) continue;
+    if (vf.degree(v) == 0) continue;
     double around = 0;
-    forEachFaceNeighbour(v, facesOf, faces, [&](std::uint32_t u) {
-      around += umbrellaCurvature(u, facesOf, faces, positionOf);
-    });
-    around /= double(2 * facesOf.degree(v));
-    noise[std::size_t(k)] = std::abs(umbrellaCurvature(v, facesOf, faces, positionOf) - around);
+    detail::forEachNeighbour(m, vf, v,
+                             [&](std::size_t u) { around += umbrellaCurvature(m, vf, u); });
+    around /= double(2 * vf.degree(v));
+    noise[std::size_t(k)] = std::abs(umbrellaCurvature(m, vf, v) - around);
   }
   noise.erase(std::remove_if(noise.begin(), noise.end(), [](double x) { return x < 0; }),
               noise.end());
@@ -130,26 +116,24 @@ struct SurfaceMeasures {
   double planarFraction = 0;  ///< planarAreaFraction
 };
 
-/// The input mesh's measures: `faces` its faces as vertex triples, `facesOf`
-/// each vertex's faces, `faceRegion` each face's smooth region (negative:
-/// none), `spacing` its sample spacing. Both from an even sample of about
-/// `samples` vertices and faces: a statistic of the whole surface.
+/// The input mesh's measures: `vf` each vertex's faces, `faceRegion` each
+/// face's smooth region (negative: none), `spacing` its sample spacing.
+/// Both from an even sample of about `samples` vertices and faces: a
+/// statistic of the whole surface.
 template <class MeshType>
-SurfaceMeasures measureSurface(const MeshType &m, const VertexFaceTable &facesOf,
-                               const std::vector<std::array<std::uint32_t, 3>> &faces,
+SurfaceMeasures measureSurface(const MeshType &m, const VertexFaceTable &vf,
                                const std::vector<int> &faceRegion, double spacing,
                                std::size_t samples = 5000) {
   SurfaceMeasures out;
-  const auto at = [&](std::size_t v) { return positionOf(&m.vert[v]); };
-  const std::size_t n = m.vert.size();
   if (spacing > 0)
     out.noiseSpacings =
-        surfaceNoiseSpacings(n, facesOf, faces, at, spacing, std::max<std::size_t>(1, n / samples));
+        surfaceNoiseSpacings(m, vf, spacing, std::max<std::size_t>(1, m.vert.size() / samples));
   std::vector<Vec3> areaVector;
   std::vector<int> regionOf;
-  const std::size_t stride = std::max<std::size_t>(1, faces.size() / samples);
-  for (std::size_t f = 0; f < faces.size(); f += stride) {
-    const Vec3 a = at(faces[f][0]), b = at(faces[f][1]), c = at(faces[f][2]);
+  const std::size_t stride = std::max<std::size_t>(1, m.face.size() / samples);
+  for (std::size_t f = 0; f < m.face.size(); f += stride) {
+    const auto &face = m.face[f];
+    const Vec3 a = positionOf(face.cV(0)), b = positionOf(face.cV(1)), c = positionOf(face.cV(2));
     areaVector.push_back((b - a) ^ (c - a));
     regionOf.push_back(faceRegion[f]);
   }

@@ -92,4 +92,20 @@ class VertexFaceTable {
   std::vector<std::uint32_t> face_;
 };
 
+namespace detail {
+
+/// Neighbouring vertices of v (through its faces in `vf`), with
+/// repetitions: each neighbour of an inner vertex twice (the two faces of
+/// their edge).
+template <class MeshType, class Visit>
+void forEachNeighbour(const MeshType &m, const VertexFaceTable &vf, std::size_t v, Visit &&visit) {
+  for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t u = vcg::tri::Index(m, m.face[*fi].cV(k));
+      if (u != v) visit(u);
+    }
+}
+
+}  // namespace detail
+
 }  // namespace edge_sharpener
