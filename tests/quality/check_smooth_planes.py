@@ -11,7 +11,6 @@ reconstruction has its RMS error lowered by at least MIN_POISSON_RMS_FACTOR (mea
 when this test was written; x1.00 without the smooth bound). rocker-arm by OpenVDB at 1% is
 as smooth and as refused, but a freeform part: sharpened, its max error rose by 3%.
 """
-import json
 import sys
 
 import checks  # first: puts bench/quality on sys.path
@@ -21,12 +20,8 @@ MIN_POISSON_RMS_FACTOR = 1.1
 
 
 def main():
-    cases = []
-    for path in sys.argv[1:]:
-        with open(path) as f:
-            cases += json.load(f)["cases"]
     failures = []
-    outcomes = checks.default_method_outcomes(cases, failures, MULTIPLIER)
+    outcomes = checks.default_method_outcomes(checks.load_results()["cases"], failures, MULTIPLIER)
     for c, before, after in outcomes:
         if (c["model"], c["input"]) == ("cross_prism", "poisson") and \
                 before["rms"] < MIN_POISSON_RMS_FACTOR * after["rms"]:

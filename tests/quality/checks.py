@@ -15,9 +15,14 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 
 def load_results():
-    """The results JSON of bench/quality/run.py named by the first argument."""
+    """The results JSON of bench/quality/run.py named by the first argument, with the cases of
+    the results JSONs named by any further arguments appended."""
     with open(sys.argv[1]) as f:
-        return json.load(f)
+        results = json.load(f)
+    for path in sys.argv[2:]:
+        with open(path) as f:
+            results["cases"] += json.load(f)["cases"]
+    return results
 
 
 def finish(failures, passed):
