@@ -90,13 +90,15 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"labelled_zone_vertices", r.extended.labelledZoneVertices},
                      {"projected_vertices", r.extended.projectedVertices},
                      {"projections_rejected", r.extended.projectionsRejected},
-                     {"max_projection", r.extended.maxProjection}};
+                     {"max_projection", r.extended.maxProjection},
+                     {"sample_spacing", r.extended.sampleSpacing}};
   if (r.evidenceGuard)
     j["evidence"] = {{"features", r.evidence.features},
                      {"weak_features", r.evidence.weakFeatures},
                      {"reverted", r.evidence.reverted},
                      {"zone_reverted", r.evidence.zoneReverted},
                      {"refused_fraction", r.evidence.refusedFraction},
+                     {"refused_bound", r.evidence.refusedBound},
                      {"median_lift", r.evidence.medianLift},
                      {"noise_spacings", r.evidence.noiseSpacings},
                      {"planar_fraction", r.evidence.planarFraction},

@@ -161,6 +161,30 @@ TEST(SharpenShapes, SphereWithoutFeaturesIsEssentiallyUnchanged) {
   EXPECT_LE(after.rms(), before.rms() * 1.05);
 }
 
+// The auto method's report names the unit of its `...Spacings` measures (the
+// input's median edge length) and the refused bound it judged the mesh by.
+TEST(SharpenShapes, AutoReportsItsSampleSpacingAndRefusedBound) {
+  const es::SharpenOptions opt;
+  for (const char *name : {"cross_prism", "sphere"}) {
+    const shapes::Shape &shape = shapes::shapeByName(name);
+    const double cell = shapes::cellSizeForDiagonalFraction(shape, 0.01);
+    es::Mesh m;
+    shapes::marchingCubes(shape, cell, m);
+    const double median = es::medianEdgeLength(m);
+    vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m);
+    const es::SharpenReport r = es::sharpen(m, opt);
+    EXPECT_DOUBLE_EQ(r.extended.sampleSpacing, median) << name;
+    EXPECT_GT(r.extended.sampleSpacing, 0.3 * cell) << name;  // marching cubes: about a cell
+    EXPECT_LT(r.extended.sampleSpacing, 1.5 * cell) << name;
+    EXPECT_TRUE(r.evidence.refusedBound == opt.maxRefusedFraction ||
+                r.evidence.refusedBound == opt.maxRefusedFractionSmooth)
+        << name << ": " << r.evidence.refusedBound;
+    if (r.evidence.refusedFraction > r.evidence.refusedBound) {
+      EXPECT_TRUE(r.evidence.wholeMeshLeft) << name;
+    }
+  }
+}
+
 // The auto method gives a split face at rest its input face back, keeping
 // only the inserted vertices a face with a move still needs: an inserted
 // vertex left at rest in the output (on the midpoint of an input edge)

@@ -517,6 +517,12 @@ def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cach
     row["moved"] = rep["placement"]["moved"]
     row["fallbacks"] = rep["placement"]["fallbacks"]
     row["geometry_changed"] = rep.get("geometry_changed", True)
+    if "extended" in rep:
+        row["sample_spacing"] = rep["extended"]["sample_spacing"]
+    if "evidence" in rep:  # why the default left what it left (families.default_misses)
+        row["evidence"] = {k: rep["evidence"][k] for k in (
+            "features", "weak_features", "refused_fraction", "refused_bound", "median_lift",
+            "noise_spacings", "planar_fraction", "whole_mesh_left")}
     if not measure_run(tools, out, model.reference, timeout, row):
         return row
     if spec.kind == "asis" or model.name in ("sphere", "rocker-arm"):

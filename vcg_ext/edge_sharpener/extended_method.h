@@ -27,6 +27,7 @@ void detectFeatureZones(MeshType &m, MeshLabels<MeshType> &labels, const Sharpen
   const bool meshHasBorder = report.smooth.boundaryEdges > 0;
   segmentRegions(m, labels, vf, opt.minRegionDepth, zones, stats, meshHasBorder);
   zones.support.sampleSpacing = medianEdgeLength(m);
+  stats.sampleSpacing = zones.support.sampleSpacing;
   if (opt.openRegionContacts) {
     stats.openedContacts =
         openRegionContacts(m, vf, zones, opt.minFacetLengthSpacings * zones.support.sampleSpacing,

@@ -86,6 +86,7 @@ struct EvidenceStats {
   std::size_t reverted = 0;        ///< inserted vertices sent back (counted in placement too)
   std::size_t zoneReverted = 0;    ///< projected zone vertices sent back
   double refusedFraction = 0;      ///< of the moved features' vertices, those refused
+  double refusedBound = 0;         ///< above it, the whole mesh is left (refusedBound)
   double medianLift = 1;           ///< how far the moves lift the surface, per unit of length
   double noiseSpacings = 0;        ///< the input surface's noise (surfaceNoiseSpacings)
   double planarFraction = 0;       ///< the input's share of area on planes
@@ -109,6 +110,7 @@ struct ExtendedStats {
   std::size_t projectedVertices = 0;     ///< zone vertices moved onto their region's plane
   std::size_t projectionsRejected = 0;   ///< moves refused by the displacement/quality guards
   double maxProjection = 0;              ///< longest such move
+  double sampleSpacing = 0;  ///< the input's median edge length: the unit of every `...Spacings`
 };
 
 struct SharpenReport {
@@ -149,7 +151,7 @@ inline void formatFeatureZones(std::ostream &s, const SharpenReport &r) {
     << " corridors dissolved), " << e.zoneFaces << " zone faces (" << e.openedContacts
     << " opened at region contacts (" << e.keptFacets << " narrow facets kept), " << e.openedCreases
     << " at internal creases), " << e.labelledZoneVertices << " of " << e.zoneVertices
-    << " zone vertices labelled";
+    << " zone vertices labelled, sample spacing " << e.sampleSpacing;
   if (r.geometryChanged)
     s << ", " << e.projectedVertices << " projected onto their region (max " << e.maxProjection
       << ", " << e.projectionsRejected << " refused)";
@@ -187,7 +189,8 @@ inline void formatGuards(std::ostream &s, const SharpenReport &r) {
     s << "evidence: " << r.evidence.weakFeatures << " of " << r.evidence.features
       << " features left as they were (" << r.evidence.reverted << " inserted and "
       << r.evidence.zoneReverted << " zone vertices sent back); "
-      << int(std::lround(100 * r.evidence.refusedFraction)) << "% of the moves refused, "
+      << int(std::lround(100 * r.evidence.refusedFraction)) << "% of the moves refused (bound "
+      << int(std::lround(100 * r.evidence.refusedBound)) << "%), "
       << "median lift " << std::lround(100 * r.evidence.medianLift) / 100.0 << ", noise "
       << std::lround(1000 * r.evidence.noiseSpacings) / 1000.0 << " spacings, "
       << int(std::lround(100 * r.evidence.planarFraction)) << "% of the area on planes"

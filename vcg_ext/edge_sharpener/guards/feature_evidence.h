@@ -437,6 +437,7 @@ class EvidenceGuard {
     measureFeatures(m_, moves_, support_, featureOf_, features_);
     stats.features = features_.size();
     stats.refusedFraction = refusedFraction(features_);
+    stats.refusedBound = refusedBound(surface_, opt_);
     out.lifts = liftsOfMoves(m_, moves_, input_);
     stats.medianLift = medianLift(out.lifts);
     stats.noiseSpacings = surface_.noiseSpacings;
