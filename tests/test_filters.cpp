@@ -152,6 +152,18 @@ TEST(Fallbacks, MixedConvexityKeepsVerticesAtRest) {
   EXPECT_EQ(r.placement.moved(), 0u);
 }
 
+// The auto method leaves the paper's convexity check to its own tests: the
+// step's planes meet far away, on the wrong side, and every vertex still
+// stays at rest.
+TEST(Fallbacks, AutoKeepsAStepAtRestWithoutTheConvexityCheck) {
+  es::Mesh m;
+  makeHeightField(m, kNx, kNy, kH, stepTilted);
+  const auto r = es::sharpen(m, es::SharpenOptions{});
+  ASSERT_GT(r.subdivision.insertedVertices, 0u);
+  EXPECT_EQ(r.placement.count(es::Placement::MixedConvexity), 0u);
+  EXPECT_EQ(r.placement.moved(), 0u);
+}
+
 TEST(Fallbacks, EdgeLengthCheckRejectsFarIntersections) {
   es::Mesh m;
   makeHeightField(m, kNx, kNy, kH, stepTilted);

@@ -185,6 +185,36 @@ TEST(SharpenShapes, AutoReportsItsSampleSpacingAndRefusedBound) {
   }
 }
 
+// A saddle corner (cross_prism: a concave edge meets two convex ones) puts
+// chamfer edges between a concave and a convex side. The paper's convexity
+// check keeps them at rest (the extended method keeps it); the auto method
+// judges them by its own tests, and sharpens the corner.
+TEST(SharpenShapes, AutoSharpensSaddleCornersThePaperKeepsAtRest) {
+  const shapes::Shape &shape = shapes::shapeByName("cross_prism");
+  es::Mesh reference, input;
+  shapes::buildReference(shape, reference);
+  shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, 0.01), input);
+  es::SharpenOptions extended;
+  extended.method = es::Method::Extended;
+  double maxAfter[2];
+  std::size_t mixed[2];
+  int i = 0;
+  for (const es::SharpenOptions &opt : {extended, es::SharpenOptions{}}) {
+    es::Mesh m;
+    vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(m, input);
+    vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m);
+    const es::SharpenReport r = es::sharpen(m, opt);
+    mixed[i] = r.placement.count(es::Placement::MixedConvexity);
+    maxAfter[i] = es::measureDistance(m, reference).maxPercent();
+    std::printf("%s: %zu kept by the convexity check, max %.4f%%\n", i ? "auto" : "extended",
+                mixed[i], maxAfter[i]);
+    ++i;
+  }
+  EXPECT_GT(mixed[0], 0u);
+  EXPECT_EQ(mixed[1], 0u);
+  EXPECT_LT(maxAfter[1], maxAfter[0]);
+}
+
 // The auto method gives a split face at rest its input face back, keeping
 // only the inserted vertices a face with a move still needs: an inserted
 // vertex left at rest in the output (on the midpoint of an input edge)

@@ -139,7 +139,8 @@ inline const std::vector<OptionSpec> &optionTable() {
       // ----- the paper's degenerate cases
       {"convexity_check", "--no-convexity-check", "", "Convexity check",
        "Keep a new vertex unmoved when its chamfer is bordered by a concave edge on one side "
-       "and a convex edge on the other (paper, section 3).",
+       "and a convex edge on the other (paper, section 3). Paper and extended methods: auto "
+       "judges these moves by its own tests (a saddle corner's are sound).",
        T::Flag, G::PaperTuning, "", 0, 1, false, kNotInMeshLab, {}, {}, ES_FLAG(convexityCheck)},
       {"parallel_angle_deg", "--parallel-angle", "", "Parallel-plane tolerance",
        "Two planes whose normals are closer than this angle count as parallel; three normals "

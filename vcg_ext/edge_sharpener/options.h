@@ -33,7 +33,9 @@ struct SharpenOptions {
   bool edgeLengthCheck = true;
 
   /// Keep a new vertex unmoved when its chamfer is bordered by a concave edge
-  /// on one side and a convex edge on the other (paper, section 3).
+  /// on one side and a convex edge on the other (paper, section 3). The paper
+  /// and extended methods; auto judges such moves by its own tests
+  /// (appliesConvexityCheck).
   bool convexityCheck = true;
 
   /// Two planes whose normals are closer than this angle count as parallel;

@@ -220,6 +220,16 @@ inline bool passesIntermediateRegion(const InsertedVertexSource &src, const Plan
 
 }  // namespace detail
 
+/// Whether placement keeps the paper's convexity check. At a saddle corner,
+/// where a concave edge meets convex ones, the chamfer edges near the corner
+/// lie between a concave and a convex side too: the paper cannot tell them
+/// from a step between two surfaces and keeps them at rest. The auto method
+/// judges them by its own tests instead (the planes' apex and distance, the
+/// flanks' bends, the evidence of the whole feature).
+inline bool appliesConvexityCheck(const SharpenOptions &opt) {
+  return opt.convexityCheck && opt.method != Method::Auto;
+}
+
 /// The paper's placement of one inserted vertex (section 3, Figures 5 and 6)
 /// between its source vertices' support planes: the point of the planes'
 /// line nearest the rest position (a chamfer edge) or the three planes'
@@ -227,7 +237,7 @@ inline bool passesIntermediateRegion(const InsertedVertexSource &src, const Plan
 /// \return the outcome and, for Placement::Moved, the target in `target`.
 inline Placement paperPlacement(const InsertedVertexSource &src, const Plane *planes,
                                 const SharpenOptions &opt, Vec3 &target) {
-  if (opt.convexityCheck) {
+  if (appliesConvexityCheck(opt)) {
     const double flat = std::sin(opt.parallelAngleRad);
     for (int i = 0; i < detail::flankPairCount(src); ++i) {
       const int j = (i + 1) % src.originalCount;
