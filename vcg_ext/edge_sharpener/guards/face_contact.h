@@ -34,14 +34,18 @@ inline bool trianglesMeet(const std::array<Vec3, 3> &p, const std::array<Vec3, 3
 /// coordinates to test at.
 template <class MeshType, class FaceType = typename MeshType::FaceType, class Position>
 bool facesIntersect(FaceType *f, FaceType *g, Position &&position) {
-  const int shared = vcg::face::CountSharedVertex(f, g);
-  if (shared == 2) return false;
-  if (shared == 3) return true;
   std::array<Vec3, 3> p, q;
   for (int k = 0; k < 3; ++k) p[k] = position(f->cV(k)), q[k] = position(g->cV(k));
+  // Corners shared by position count as shared vertices: a marching-cubes
+  // mesh has distinct vertices at one point where the surface passes through
+  // a grid node, and faces that meet there only touch.
+  int shared = 0, i0 = 0, i1 = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (f->cV(i) == g->cV(j) || p[i] == q[j]) ++shared, i0 = i, i1 = j;
+  if (shared == 2) return false;
+  if (shared >= 3) return true;
   if (shared == 0) return trianglesMeet(p, q);
-  int i0 = 0, i1 = 0;
-  vcg::face::FindSharedVertex(f, g, i0, i1);
   // As vcglib: the first segment that meets the other face decides.
   const Vec3 half = p[i0] * 0.5;
   for (int side = 0; side < 2; ++side) {
