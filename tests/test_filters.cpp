@@ -7,7 +7,9 @@
 #include <limits>
 
 #include "edge_sharpener/edge_sharpener.h"
+#include "edge_sharpener/guards/face_contact.h"
 #include "edge_sharpener/util/mesh_types.h"
+#include "hand_built_meshes.h"
 #include "test_meshes/shapes.h"
 
 namespace es = edge_sharpener;
@@ -382,6 +384,28 @@ TEST(Fallbacks, SharpEdgeFarAwayKeepsVertexAtRest) {
 // The intersection guard's broad phase: a hashed grid over the query boxes.
 // A face in the last, partial grid cell of the boxes' bounds must still be
 // found (it was taken for outside the bounds, and its intersections missed).
+// Two faces meeting at one point through distinct vertices there (a
+// marching-cubes mesh has them where the surface passes through a grid node)
+// only touch, as faces sharing the vertex do; through the same point they
+// still intersect where one crosses the other.
+TEST(IntersectionGuard, FacesMeetingAtADuplicatedVertexOnlyTouch) {
+  using es::Vec3;
+  const auto at = [](const es::Mesh::VertexType *v) { return es::positionOf(v); };
+  es::Mesh m;
+  // f = 0 1 2 and g = 3 4 5, vertex 3 a copy of vertex 0; g coplanar beside f.
+  es::hand_built::makeMesh(m,
+                           {Vec3(0, 0, 0), Vec3(-1, 0.5, 0), Vec3(-1, -0.5, 0), Vec3(0, 0, 0),
+                            Vec3(1, -0.5, 0), Vec3(1, 0.5, 0)},
+                           {{0, 1, 2}, {3, 4, 5}});
+  EXPECT_FALSE(es::detail::facesIntersect<es::Mesh>(&m.face[0], &m.face[1], at));
+  // g standing across f: from the common point through f's inside and out.
+  es::hand_built::makeMesh(m,
+                           {Vec3(0, 0, 0), Vec3(-1, 0.5, 0), Vec3(-1, -0.5, 0), Vec3(0, 0, 0),
+                            Vec3(-0.8, 0, -0.5), Vec3(-0.8, 0, 0.5)},
+                           {{0, 1, 2}, {3, 4, 5}});
+  EXPECT_TRUE(es::detail::facesIntersect<es::Mesh>(&m.face[0], &m.face[1], at));
+}
+
 TEST(IntersectionGuard, BoxOverlapFindsFacesInTheLastPartialCell) {
   es::Mesh m;
   using Alloc = vcg::tri::Allocator<es::Mesh>;
