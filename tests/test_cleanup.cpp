@@ -338,8 +338,9 @@ struct SplitTetrahedron {
   std::unique_ptr<es::MeshLabels<es::Mesh>> labels;
   es::SplitPlan plan;
 
-  explicit SplitTetrahedron(std::initializer_list<int> chamferEdgesOfABC) {
-    es::hand_built::makeMesh(m, {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.3, 1, 0), Vec3(0.4, 0.4, -1)},
+  explicit SplitTetrahedron(std::initializer_list<int> chamferEdgesOfABC,
+                            const Vec3 &c = Vec3(0.3, 1, 0)) {
+    es::hand_built::makeMesh(m, {Vec3(0, 0, 0), Vec3(1, 0, 0), c, Vec3(0.4, 0.4, -1)},
                              {{kA, kB, kC}, {kB, kA, kD}, {kC, kB, kD}, {kA, kC, kD}});
     labels = std::make_unique<es::MeshLabels<es::Mesh>>(m);
     for (const int i : chamferEdgesOfABC) labels->setEdge(&m.face[0], i, es::EdgeLabel::Chamfer);
@@ -427,4 +428,35 @@ TEST(DegenerateCleanup, RevertsAVertexWhenNeitherCollapseNorFlipApplies) {
   EXPECT_EQ(liveFaces(t.m), 6u);
   EXPECT_TRUE(closedOrientedManifold(t.m));
   EXPECT_GE(smallestAngle(t.m), kDegenerateRad);
+}
+
+TEST(DegenerateCleanup, LeavesAMoveWhoseNeedleIsTheInputsOwnShortEdge) {
+  // c lies 0.005 from b: e b c (e at the middle of a-b) is a needle at rest
+  // already, on the input's short edge b-c. Lifting e keeps it one; sending e
+  // back would not cure it, so e keeps its move and the face counts as
+  // inherited from the input.
+  SplitTetrahedron t({0}, Vec3(1, 0.005, 0));
+  const std::size_t e = t.insertedBetween(kA, kB);
+  const Vec3 lifted = t.at(e) + Vec3(0, 0, 0.2);
+  t.move(e, lifted);
+  auto moves = t.moves();
+  const es::CleanupStats s = es::removeDegenerateTriangles(t.m, moves, kDegenerateRad);
+  EXPECT_GE(s.degenerateFound, 1u);
+  EXPECT_EQ(s.reverted, 0u);
+  EXPECT_EQ(s.collapses, 0u);
+  EXPECT_EQ(s.remaining, 0u);
+  EXPECT_GE(s.inherited, 1u);
+  EXPECT_EQ(t.labels->placement[e], es::Placement::Moved);
+  EXPECT_EQ(t.m.vert[e].cP(), vcg::Point3f::Construct(lifted));
+  EXPECT_TRUE(closedOrientedManifold(t.m));
+
+  // Where the needle is the move's own (e pushed next to the line b-c), the
+  // move goes back as before.
+  SplitTetrahedron u({0});
+  const std::size_t f = u.insertedBetween(kA, kB);
+  u.move(f, u.at(kB) + (u.at(kC) - u.at(kB)) * 0.5 + Vec3(0.001, 0, 0));
+  auto movesU = u.moves();
+  const es::CleanupStats su = es::removeDegenerateTriangles(u.m, movesU, kDegenerateRad);
+  EXPECT_EQ(su.remaining, 0u);
+  EXPECT_NE(u.labels->placement[f], es::Placement::Moved);
 }

@@ -109,6 +109,39 @@ double bboxDiagonal(const M &m) {
   return box.IsNull() ? 0.0 : box.Diag();
 }
 
+/// Whether output face f, with an angle below `bound`, is a child of an input
+/// sliver that no vertex at rest would cure (what cleanup leaves in place): its
+/// shortest edge joins two original vertices a and b, and its third vertex,
+/// put back at some place it may rest (the midpoint of an input edge or the
+/// centroid of an input face, at a or b), leaves an angle below `bound` too.
+template <class M, class F>
+bool inputSliverAtRest(const M &input, const M &output, const F &f, double bound) {
+  int shortest = 0;
+  for (int k = 1; k < 3; ++k)
+    if ((pos(*f.cV((k + 1) % 3)) - pos(*f.cV(k))).SquaredNorm() <
+        (pos(*f.cV((shortest + 1) % 3)) - pos(*f.cV(shortest))).SquaredNorm())
+      shortest = k;
+  const std::size_t a = vcg::tri::Index(output, f.cV(shortest));
+  const std::size_t b = vcg::tri::Index(output, f.cV((shortest + 1) % 3));
+  if (a >= input.vert.size() || b >= input.vert.size()) return false;
+  const P3 A = pos(input.vert[a]), B = pos(input.vert[b]);
+  for (const auto &g : input.face) {
+    std::size_t at = 3;  // which corner of g is a or b
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t v = vcg::tri::Index(input, g.cV(k));
+      if (v == a || v == b) at = std::size_t(k);
+    }
+    if (at == 3) continue;
+    const P3 corner = pos(*g.cV(int(at)));
+    const P3 rests[3] = {(corner + pos(*g.cV(int(at + 1) % 3))) / 2,
+                         (corner + pos(*g.cV(int(at + 2) % 3))) / 2,
+                         (pos(*g.cV(0)) + pos(*g.cV(1)) + pos(*g.cV(2))) / 3};
+    for (const P3 &rest : rests)
+      if (minAngle(A, B, rest) < bound) return true;
+  }
+  return false;
+}
+
 /// Checks `output` = sharpen(copy of `input`) with report `r`:
 ///  - finite coordinates; original vertices keep index and bit-identical position;
 ///  - vertex/face counts equal the report's, and the report's arithmetic holds;
@@ -117,8 +150,9 @@ double bboxDiagonal(const M &m) {
 ///    splitting (a boundary chamfer edge becomes two), never more than it had;
 ///  - no face with an angle below `degenerateAngleRad` contains a moved vertex: every
 ///    vertex of such a face lies on the input surface (inserted vertices start on it, at
-///    an edge midpoint or face centroid, and leave it only when placed); r.cleanup.remaining
-///    is 0.
+///    an edge midpoint or face centroid, and leave it only when placed), unless the face
+///    is an input sliver's child that stays below that angle at rest too
+///    (inputSliverAtRest); r.cleanup.remaining is 0.
 /// Rebuilds FF adjacency of both meshes.
 template <class M>
 std::string sharpenProblem(M &input, M &output, const edge_sharpener::SharpenReport &r,
@@ -158,6 +192,7 @@ std::string sharpenProblem(M &input, M &output, const edge_sharpener::SharpenRep
   for (std::size_t i = 0; i < output.face.size(); ++i) {
     const auto &f = output.face[i];
     if (minAngle(pos(*f.cV(0)), pos(*f.cV(1)), pos(*f.cV(2))) >= degenerateAngleRad) continue;
+    if (inputSliverAtRest(input, output, f, degenerateAngleRad)) continue;
     for (int k = 0; k < 3; ++k) {
       const std::size_t vi = vcg::tri::Index(output, f.cV(k));
       if (vi < input.vert.size()) continue;  // original vertex: never moved

@@ -98,6 +98,22 @@ bool linkConditionHolds(FaceType &f, int z) {
   return borderEdge || !(end0.onBorder && end1.onBorder);
 }
 
+/// Whether degenerate face `f` is a child of an input sliver that no revert
+/// cures: its shortest edge joins two original vertices (the input's own short
+/// edge) and it has an angle below `angleRad` with every vertex at rest too.
+/// Wherever its inserted vertex lies, such a face stays a needle; sending the
+/// vertex back would only give up its sharp edge or corner.
+template <class MeshType>
+bool isInputSliverAtRest(const MeshType &m, const typename MeshType::FaceType &f,
+                         const VertexMoves<MeshType> &moves, double angleRad) {
+  const int z = shortestEdgeIndex(f);
+  if (vcg::tri::Index(m, f.cV(z)) >= moves.firstInserted() ||
+      vcg::tri::Index(m, f.cV((z + 1) % 3)) >= moves.firstInserted())
+    return false;
+  const auto rest = [&](int k) { return moves.exactRest(vcg::tri::Index(m, f.cV(k))); };
+  return minTriangleAngle(rest(0), rest(1), rest(2)) < angleRad;
+}
+
 }  // namespace detail
 
 /// Collapses the shortest edge of a needle (a triangle whose shortest edge is
@@ -198,8 +214,9 @@ std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
 
 /// Stage 6: removes faces with an angle below `angleRad` among the faces made
 /// by subdivide(): needles by collapse, caps by flip, and otherwise by
-/// sending the face's moved vertices back to rest. What is left is inherited
-/// from the input: children of input slivers, split at rest positions. Deleted elements are left
+/// sending the face's moved vertices back to rest, unless the face is an input
+/// sliver's child that stays a needle at rest too (detail::isInputSliverAtRest).
+/// What is left is inherited from the input: children of input slivers. Deleted elements are left
 /// flagged (compact afterwards). With `onlyWhereMoved` (the auto method),
 /// a face none of whose vertices moved is left as it is: it lies on its
 /// input face, and a collapse would move the input's surface.
@@ -239,6 +256,8 @@ CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves
         s.removedFaces += std::size_t(removed);
       } else if (flipCap(f, labels)) {
         ++s.flips;
+      } else if (detail::isInputSliverAtRest(m, f, moves, angleRad)) {
+        continue;
       } else if (std::size_t n = revertInsertedVertices(m, f, moves)) {
         s.reverted += n;
       } else {
@@ -253,7 +272,7 @@ CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves
     if (!degenerate(f)) continue;
     bool moved = false;
     for (int j = 0; j < 3; ++j) moved |= labels.placement[f.cV(j)] == Placement::Moved;
-    ++(moved ? s.remaining : s.inherited);
+    ++(moved && !detail::isInputSliverAtRest(m, f, moves, angleRad) ? s.remaining : s.inherited);
   }
   return s;
 }

@@ -65,7 +65,7 @@ struct CleanupStats {
   std::size_t flips = 0;            ///< edges flipped inside split faces
   std::size_t reverted = 0;         ///< inserted vertices moved back (counted in placement too)
   std::size_t remaining = 0;        ///< faces with a moved vertex still below the threshold
-  std::size_t inherited = 0;        ///< degenerate children of input slivers, no vertex moved
+  std::size_t inherited = 0;        ///< degenerate children of input slivers (at rest too)
 };
 
 /// Stage 6b: moved vertices sent back to rest because a face of theirs
