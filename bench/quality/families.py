@@ -291,12 +291,12 @@ def _miss_kind(case, run):
     return "short"
 
 
-MISS_KINDS = (("lost a part", "lost a part in the sampler (max error deeper than "
+MISS_KINDS = (("lost a part", "a part lost by the sampler (max error deeper than "
                               f"{LOST_PART_SPACINGS:g} sample spacings)"),
-              ("no chamfer", "had no chamfer found"),
-              ("left whole", "were left whole (weak evidence over the whole mesh)"),
-              ("max unchanged", "were sharpened with their max error unchanged"),
-              ("short", "were sharpened by less than the target"))
+              ("no chamfer", "no chamfer found"),
+              ("left whole", "left whole (weak evidence over the whole mesh)"),
+              ("max unchanged", "sharpened, max error unchanged"),
+              ("short", "sharpened, by less than the target"))
 
 
 def default_misses(cases, mult):
@@ -333,10 +333,11 @@ def default_misses(cases, mult):
                         + ("–" if sp is None else f"{sp:.1f}") + f" | {_what_default_did(c, r)} |")
         title = FAMILY_TITLES.get(kind, kind) + (f", {res}" if res else "")
         kmax, krms, _, _, _ = family_stats(kept, DEFAULT_METHOD, mult)
+        without = (f"; without the {lost} that lost a part {_fx(kmax)} / {_fx(krms)}"
+                   if lost else "")
         L += [f"**{title}** (target ×{target[0]:g} / ×{target[1]:g}; all inputs {_fx(gmax)} / "
-              f"{_fx(grms)}; without the {lost} that lost a part "
-              f"{_fx(kmax)} / {_fx(krms)}). Below the target: "
-              + "; ".join(f"{kinds[k]} {text}" for k, text in MISS_KINDS if k in kinds) + ".", "",
+              f"{_fx(grms)}{without}). Below the target: "
+              + "; ".join(f"{text}: {kinds[k]}" for k, text in MISS_KINDS if k in kinds) + ".", "",
               "| model | resolution | max before -> after | RMS | input's max error, spacings "
               "| what the default did |", "|---|---|---|---|---|---|", *rows, ""]
     return L
