@@ -23,7 +23,8 @@ inline bool trianglesMeet(const std::array<Vec3, 3> &p, const std::array<Vec3, 3
 
 /// Whether two distinct faces intersect: vcglib's test (the one
 /// tri::Clean::SelfIntersections() applies: TestFaceFaceIntersection), on
-/// the coordinates in double precision. Faces sharing an edge are not tested;
+/// the coordinates in double precision, with corners at the same position
+/// counted as shared. Faces sharing an edge are not tested;
 /// faces sharing one vertex intersect when the edge opposite the shared
 /// vertex in one, pulled halfway towards it, crosses the other; other faces
 /// by Moeller's triangle-triangle test, touching included, unless

@@ -358,7 +358,7 @@ class IntersectionGuard {
 
   /// Sends v to rest; a face it leaves below the degenerate angle sends its
   /// other moved vertices to rest too (cleanup's guarantee: no such face
-  /// holds a moved vertex).
+  /// holds a moved vertex, input slivers' children aside).
   void sendToRest(std::size_t first) {
     std::vector<std::size_t> stack{first};
     while (!stack.empty()) {
@@ -469,7 +469,7 @@ class IntersectionGuard {
 /// the smaller displacement, then the lower index). A vertex sent to rest
 /// that leaves a face below that angle sends the face's other moved
 /// vertices to rest too, so cleanup's guarantee (no such face holds a moved
-/// vertex) is kept. Inserted vertices that retreat are labelled
+/// vertex, input slivers' children aside) is kept. Inserted vertices that retreat are labelled
 /// Placement::IntersectionRevert; those back at rest went through
 /// VertexMoves::sendBack(). Deterministic (serial, index order).
 /// `longestInputEdge`: the input's longest edge (SharpenReport), which bounds
