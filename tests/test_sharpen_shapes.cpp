@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdio>
+#include <random>
 #include <set>
 
 #include "edge_sharpener/edge_sharpener.h"
@@ -213,6 +214,43 @@ TEST(SharpenShapes, AutoSharpensSaddleCornersThePaperKeepsAtRest) {
   EXPECT_GT(mixed[0], 0u);
   EXPECT_EQ(mixed[1], 0u);
   EXPECT_LT(maxAfter[1], maxAfter[0]);
+}
+
+// The report's projections and displacements count only what the output
+// keeps: on a noisy marching-cubes mesh the guards send moves back, and the
+// longest projection is then that of the zone vertices still projected.
+TEST(SharpenShapes, ReportCountsOnlyTheMovesTheOutputKeeps) {
+  const shapes::Shape &shape = shapes::shapeByName("cylinder_block");
+  for (const double amplitude : {0.0, 0.1, 0.15, 0.2, 0.5, 1.0}) {
+    es::Mesh input;
+    shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, 0.02), input);
+    vcg::tri::UpdateNormal<es::Mesh>::PerVertexNormalized(input);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const double cell = shapes::cellSizeForDiagonalFraction(shape, 0.02);
+    for (auto &v : input.vert) v.P() += v.N() * float(u(rng) * amplitude * cell);
+    es::Mesh m;
+    vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(m, input);
+    vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m);
+    const es::SharpenReport r = es::sharpen(m, es::SharpenOptions{});
+    std::size_t moved = 0;
+    double longest = 0;
+    for (std::size_t v = 0; v < input.vert.size(); ++v) {
+      const double d = (es::positionOf(&m.vert[v]) - es::positionOf(&input.vert[v])).Norm();
+      moved += d > 0;
+      longest = std::max(longest, d);
+    }
+    std::printf(
+        "noise %.2f cell: %zu zone vertices projected (longest %g), %zu inserted moved "
+        "(farthest %g)%s\n",
+        amplitude, r.extended.projectedVertices, r.extended.maxProjection, r.placement.moved(),
+        r.placement.maxDisplacement, r.evidence.wholeMeshLeft ? ", mesh left whole" : "");
+    EXPECT_EQ(r.extended.projectedVertices, moved) << amplitude;
+    EXPECT_DOUBLE_EQ(r.extended.maxProjection, longest) << amplitude;
+    if (r.placement.moved() == 0) {
+      EXPECT_EQ(r.placement.maxDisplacement, 0.0) << amplitude;
+    }
+  }
 }
 
 // The auto method gives a split face at rest its input face back, keeping

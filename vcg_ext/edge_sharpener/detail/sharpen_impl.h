@@ -77,7 +77,10 @@ void requireColours(MeshType &m, const SharpenOptions &opt) {
 template <class MeshType>
 void countOutcomes(const VertexMoves<MeshType> &moves, SharpenReport &report) {
   report.placement = moves.countOutcomes();
-  if (report.extendedMethod) report.extended.projectedVertices = moves.movedOriginals();
+  if (report.extendedMethod) {
+    report.extended.projectedVertices = moves.movedOriginals();
+    report.extended.maxProjection = moves.longestOriginalMove();
+  }
 }
 
 /// Colours (inspection only), compact vectors, normals, output counts.

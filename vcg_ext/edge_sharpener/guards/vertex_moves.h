@@ -82,17 +82,30 @@ class VertexMoves {
   }
 
   /// The outcome of every inserted vertex still there (cleanup collapses
-  /// some), and how far the farthest moved from rest.
+  /// some), and how far the farthest moved one lies from rest (0 when none
+  /// moved: one at rest lies on its rounded midpoint, a hair from the exact one).
   PlacementStats countOutcomes() const {
     PlacementStats s;
     for (std::size_t k = 0; k < plan_.inserted.size(); ++k) {
       const auto &v = m_.vert[firstInserted() + k];
       if (v.IsD()) continue;
       ++s.byOutcome[int(labels_.placement[&v])];
-      s.maxDisplacement =
-          std::max(s.maxDisplacement, (positionOf(&v) - plan_.inserted[k].rest).Norm());
+      if (isMoved(firstInserted() + k))
+        s.maxDisplacement =
+            std::max(s.maxDisplacement, (positionOf(&v) - plan_.inserted[k].rest).Norm());
     }
     return s;
+  }
+
+  /// How far the farthest original vertex still away from rest lies from it
+  /// (the extended method's projected zone vertices that no guard sent back).
+  double longestOriginalMove() const {
+    double longest = 0;
+    for (std::size_t v = 0; v < originalRest_.size(); ++v)
+      if (!m_.vert[v].IsD() && isMoved(v))
+        longest =
+            std::max(longest, (positionOf(&m_.vert[v]) - Vec3::Construct(originalRest_[v])).Norm());
+    return longest;
   }
 
   /// Original vertices away from rest (the extended method's projected zone
