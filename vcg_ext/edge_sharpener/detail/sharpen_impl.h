@@ -78,8 +78,9 @@ template <class MeshType>
 void countOutcomes(const VertexMoves<MeshType> &moves, SharpenReport &report) {
   report.placement = moves.countOutcomes();
   if (report.extendedMethod) {
-    report.extended.projectedVertices = moves.movedOriginals();
-    report.extended.maxProjection = moves.longestOriginalMove();
+    const auto projected = moves.originalMoves();
+    report.extended.projectedVertices = projected.count;
+    report.extended.maxProjection = projected.longest;
   }
 }
 

@@ -98,7 +98,9 @@ bool moveKeepsFaces(const MeshType &m, const std::vector<std::uint32_t> &faces, 
 /// vertices on the rounded band. A move longer
 /// than `opt.maxProjectionFactor` x the vertex's mean edge length, or one
 /// that would flip an incident face or create an angle below the
-/// degenerate threshold, is not made. Region vertices never move.
+/// degenerate threshold, is not made (counted in stats.projectionsRejected;
+/// the moves the guards leave are counted at the end, from VertexMoves).
+/// Region vertices never move.
 /// \pre the mesh is the one detection labelled (zones.inputFaces), split by
 /// subdivide() and changed by nothing else since.
 /// \return the number of vertices moved.
@@ -128,10 +130,8 @@ std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::siz
       continue;
     }
     m.vert[v].P() = vcg::Point3<Scalar>::Construct(target);
-    stats.maxProjection = std::max(stats.maxProjection, step);
     ++moved;
   }
-  stats.projectedVertices = moved;
   return moved;
 }
 

@@ -97,23 +97,22 @@ class VertexMoves {
     return s;
   }
 
-  /// How far the farthest original vertex still away from rest lies from it
-  /// (the extended method's projected zone vertices that no guard sent back).
-  double longestOriginalMove() const {
+  /// The original vertices away from rest (the extended method's projected
+  /// zone vertices that no guard sent back): how many, and how far the
+  /// farthest lies from rest.
+  struct OriginalMoves {
+    std::size_t count = 0;
     double longest = 0;
-    for (std::size_t v = 0; v < originalRest_.size(); ++v)
-      if (!m_.vert[v].IsD() && isMoved(v))
-        longest =
-            std::max(longest, (positionOf(&m_.vert[v]) - Vec3::Construct(originalRest_[v])).Norm());
-    return longest;
-  }
-
-  /// Original vertices away from rest (the extended method's projected zone
-  /// vertices that no guard sent back).
-  std::size_t movedOriginals() const {
-    std::size_t n = 0;
-    for (std::size_t v = 0; v < originalRest_.size(); ++v) n += !m_.vert[v].IsD() && isMoved(v);
-    return n;
+  };
+  OriginalMoves originalMoves() const {
+    OriginalMoves out;
+    for (std::size_t v = 0; v < originalRest_.size(); ++v) {
+      if (m_.vert[v].IsD() || !isMoved(v)) continue;
+      ++out.count;
+      out.longest = std::max(out.longest,
+                             (positionOf(&m_.vert[v]) - Vec3::Construct(originalRest_[v])).Norm());
+    }
+    return out;
   }
 
  private:
