@@ -63,6 +63,12 @@ def before_after(before, after, fmt=lambda x: f"{x:.3g}"):
             f"{fmt(before['rms'])} -> {fmt(after['rms'])}")
 
 
+def _factors(case, run):
+    """A run's max and RMS reduction factors (before/after, both floored)."""
+    b, a = case["before"], run["after"]
+    return _floored(b["max"]) / _floored(a["max"]), _floored(b["rms"]) / _floored(a["rms"])
+
+
 def family_stats(cases, method, mult):
     """Geometric means of the max and RMS reduction factors (references with sharp features),
     worse count, outputs measured and runs that failed (refusals included)."""
@@ -75,12 +81,12 @@ def family_stats(cases, method, mult):
             failed += 1
             continue
         measured += 1
-        b, a = c["before"], r["after"]
-        if is_worse(b, a):
+        if is_worse(c["before"], r["after"]):
             worse += 1
         if c["model"] not in NO_SHARP_FEATURES and c["input"] != "asis":
-            fmax.append(_floored(b["max"]) / _floored(a["max"]))
-            frms.append(_floored(b["rms"]) / _floored(a["rms"]))
+            fm, fr = _factors(c, r)
+            fmax.append(fm)
+            frms.append(fr)
     return _gmean(fmax), _gmean(frms), worse, measured, failed
 
 
@@ -258,6 +264,11 @@ def _spacings(case, run):
     return case["before"]["max"] / (100.0 * spacing / diag)
 
 
+def _max_unchanged(case, run):
+    """Whether the run left the max error within the worse rule's 2% of the input's."""
+    return _floored(run["after"]["max"]) * (1 + WORSE_MAX) >= _floored(case["before"]["max"])
+
+
 def _what_default_did(case, run):
     """What the default method did to one input, from its report (run.py keeps the evidence)."""
     ev = run.get("evidence")
@@ -272,7 +283,7 @@ def _what_default_did(case, run):
     text = "sharpened"
     if ev:
         text += f", {ev['weak_features']} of {ev['features']} features left as they were"
-    if _floored(run["after"]["max"]) * (1 + WORSE_MAX) >= _floored(case["before"]["max"]):
+    if _max_unchanged(case, run):
         text += "; max unchanged"
     return text
 
@@ -286,7 +297,7 @@ def _miss_kind(case, run):
     ev = run.get("evidence")
     if ev and ev["whole_mesh_left"]:
         return "left whole"
-    if _floored(run["after"]["max"]) * (1 + WORSE_MAX) >= _floored(case["before"]["max"]):
+    if _max_unchanged(case, run):
         return "max unchanged"
     return "short"
 
@@ -317,8 +328,7 @@ def default_misses(cases, mult):
             if (r is None or r["status"] != "ok" or c["model"] in NO_SHARP_FEATURES
                     or c["input"] == "asis"):
                 continue
-            fmax = _floored(c["before"]["max"]) / _floored(r["after"]["max"])
-            frms = _floored(c["before"]["rms"]) / _floored(r["after"]["rms"])
+            fmax, frms = _factors(c, r)
             k = _miss_kind(c, r)
             if k == "lost a part":
                 lost += 1
