@@ -450,3 +450,26 @@ TEST(DegenerateCleanup, LeavesAMoveWhoseNeedleIsTheInputsOwnShortEdge) {
   EXPECT_EQ(t.m.vert[e].cP(), vcg::Point3f::Construct(lifted));
   EXPECT_TRUE(closedOrientedManifold(t.m));
 }
+
+TEST(DegenerateCleanup, CollapsesTwoVerticesMovedOntoTheSameOriginal) {
+  // a b c split in 3 by chamfer edges b-c (m1) and c-a (m2); both move onto
+  // c, as where two edges' targets meet at an input vertex (a marching-cubes
+  // vertex on a grid node). The face between m1 and m2 away from c is then a
+  // needle too: its normal says nothing about a fold, and collapsing m1 into
+  // c must not be refused for it. Both collapse; the tetrahedron is back.
+  SplitTetrahedron t({1, 2});
+  const std::size_t m1 = t.insertedBetween(kB, kC), m2 = t.insertedBetween(kC, kA);
+  t.move(m1, t.at(kC));
+  t.move(m2, t.at(kC));
+  auto moves = t.moves();
+  const es::CleanupStats s = es::removeDegenerateTriangles(t.m, moves, kDegenerateRad);
+  EXPECT_GE(s.degenerateFound, 2u);
+  EXPECT_EQ(s.collapses, 2u);
+  EXPECT_EQ(s.reverted, 0u);
+  EXPECT_EQ(s.remaining, 0u);
+  EXPECT_TRUE(t.m.vert[m1].IsD());
+  EXPECT_TRUE(t.m.vert[m2].IsD());
+  EXPECT_EQ(liveFaces(t.m), 4u);
+  EXPECT_TRUE(closedOrientedManifold(t.m));
+  EXPECT_GE(smallestAngle(t.m), kDegenerateRad);
+}
