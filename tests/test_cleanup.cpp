@@ -473,3 +473,70 @@ TEST(DegenerateCleanup, CollapsesTwoVerticesMovedOntoTheSameOriginal) {
   EXPECT_TRUE(closedOrientedManifold(t.m));
   EXPECT_GE(smallestAngle(t.m), kDegenerateRad);
 }
+
+namespace {
+
+// A flat fan around e closed by a cone below, whose face e a d is a cap: e
+// lies a hair off the segment from a to d, 0.2 from a. a and e are inserted
+// vertices (the two new vertices side by side on one line); d, p, q and the
+// apex are original.
+enum : int { kCapD, kCapP, kCapQ, kCapApex, kCapA, kCapE };
+
+void capBetweenInserted(es::Mesh &m, es::SplitPlan &plan, int sourcesOfA, int sourcesOfE) {
+  Triangles triangles{
+      {kCapE, kCapA, kCapD}, {kCapE, kCapD, kCapP}, {kCapE, kCapP, kCapQ}, {kCapE, kCapQ, kCapA}};
+  addConeUnderBorder(triangles, kCapApex);
+  es::hand_built::makeMesh(m,
+                           {Vec3(1, -0.005, 0), Vec3(0.5, 1, 0), Vec3(-0.5, 0.5, 0),
+                            Vec3(0.3, 0.3, -1), Vec3(0, 0, 0), Vec3(0.2, 0, 0)},
+                           triangles);
+  plan = insertedFrom(kCapA);
+  plan.inserted.resize(2);
+  plan.inserted[0].originalCount = sourcesOfA;
+  plan.inserted[1].originalCount = sourcesOfE;
+}
+
+}  // namespace
+
+TEST(NeedleCollapse, CollapsesACapBetweenTwoInsertedVerticesOnlyWhenAsked) {
+  es::Mesh m;
+  es::SplitPlan plan;
+  capBetweenInserted(m, plan, 2, 2);
+  ASSERT_TRUE(closedOrientedManifold(m));
+  const std::size_t cap = faceWith(m, kCapE, kCapA, kCapD);
+  ASSERT_LT(
+      es::minTriangleAngle(es::positionOf(m.face[cap].cV(0)), es::positionOf(m.face[cap].cV(1)),
+                           es::positionOf(m.face[cap].cV(2))),
+      kDegenerateRad);
+  int removed = 0;
+  EXPECT_FALSE(es::collapseNeedle(m, m.face[cap], plan, kDegenerateRad, removed));  // not a needle
+  EXPECT_EQ(liveFaces(m), 8u);
+  const auto before = positions(m);
+  ASSERT_TRUE(es::collapseNeedle(m, m.face[cap], plan, kDegenerateRad, removed,
+                                 /*capsBetweenInserted=*/true));
+  EXPECT_EQ(removed, 2);
+  EXPECT_TRUE(m.vert[kCapE].IsD());  // of two edge vertices, the later goes
+  EXPECT_EQ(m.vert[kCapA].cP(), before[kCapA]);
+  EXPECT_EQ(liveFaces(m), 6u);
+  EXPECT_TRUE(closedOrientedManifold(m));
+}
+
+TEST(NeedleCollapse, ACapCollapseKeepsTheCornerVertex) {
+  es::Mesh m;
+  es::SplitPlan plan;
+  capBetweenInserted(m, plan, 3, 2);  // a is a corner's vertex, e an edge's
+  const auto before = positions(m);
+  int removed = 0;
+  ASSERT_TRUE(es::collapseNeedle(m, m.face[faceWith(m, kCapE, kCapA, kCapD)], plan, kDegenerateRad,
+                                 removed, /*capsBetweenInserted=*/true));
+  EXPECT_TRUE(m.vert[kCapE].IsD());
+  EXPECT_EQ(m.vert[kCapA].cP(), before[kCapA]);
+  es::Mesh m2;
+  capBetweenInserted(m2, plan, 2, 3);  // now e is the corner's
+  const auto before2 = positions(m2);
+  ASSERT_TRUE(es::collapseNeedle(m2, m2.face[faceWith(m2, kCapE, kCapA, kCapD)], plan,
+                                 kDegenerateRad, removed, /*capsBetweenInserted=*/true));
+  EXPECT_TRUE(m2.vert[kCapA].IsD());
+  EXPECT_EQ(m2.vert[kCapE].cP(), before2[kCapE]);
+  EXPECT_TRUE(closedOrientedManifold(m2));
+}

@@ -126,26 +126,37 @@ bool isInputSliverAtRest(const MeshType &m, const typename MeshType::FaceType &f
 /// Collapses the shortest edge of a needle (a triangle whose shortest edge is
 /// tiny next to its longest) when an endpoint is an inserted vertex: the
 /// inserted vertex is removed and merged into the other endpoint, which keeps
-/// its position. Refused when it would break manifoldness (link condition) or
+/// its position. With `capsBetweenInserted`, also the shortest edge of a cap
+/// when both its ends are inserted vertices (two new vertices placed on one
+/// line, side by side, with a third vertex of it: the flat face between them
+/// goes, and the line keeps its points); a corner vertex then stays, an edge
+/// vertex goes. Refused when it would break manifoldness (link condition) or
 /// flip a surrounding face. \return true if collapsed; `removedFaces` then
 /// holds the number of faces deleted (2, or 1 on a border edge).
 template <class MeshType>
 bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan &plan,
-                    double angleRad, int &removedFaces) {
+                    double angleRad, int &removedFaces, bool capsBetweenInserted = false) {
   using FaceType = typename MeshType::FaceType;
   using Pos = vcg::face::Pos<FaceType>;
   const int z = detail::shortestEdgeIndex(f);
   const double shortLen = (positionOf(f.cV(z)) - positionOf(f.cV((z + 1) % 3))).Norm();
   const int zl = detail::longestEdgeIndex(f);
   const double longLen = (positionOf(f.cV(zl)) - positionOf(f.cV((zl + 1) % 3))).Norm();
-  if (shortLen > 2 * std::sin(angleRad) * longLen) return false;  // a cap, not a needle
-
   const std::size_t ia = vcg::tri::Index(m, f.cV(z)), ib = vcg::tri::Index(m, f.cV((z + 1) % 3));
-  const bool insA = ia >= plan.originalVertexCount, insB = ib >= plan.originalVertexCount;
+  const std::size_t n0 = plan.originalVertexCount;
+  const bool insA = ia >= n0, insB = ib >= n0;
+  const bool needle = shortLen <= 2 * std::sin(angleRad) * longLen;
+  if (!needle && !(capsBetweenInserted && insA && insB)) return false;
   if (!insA && !insB) return false;
   // FFEdgeCollapse removes V0 of the edge: pick the side where that is the
-  // inserted vertex (the higher index when both are inserted).
-  const bool removeA = insA && (!insB || ia > ib);
+  // inserted vertex (the higher index when both are inserted; of a cap's
+  // two, the one with fewer sources: a corner stays).
+  bool removeA = insA && (!insB || ia > ib);
+  if (!needle) {
+    const int sourcesA = plan.inserted[ia - n0].originalCount;
+    const int sourcesB = plan.inserted[ib - n0].originalCount;
+    if (sourcesA != sourcesB) removeA = sourcesA < sourcesB;
+  }
   FaceType *cf = &f;
   int cz = z;
   if (!removeA) {
@@ -224,11 +235,13 @@ std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
 }
 
 /// Stage 6: removes faces with an angle below `angleRad` among the faces made
-/// by subdivide(): needles by collapse, caps by flip, and otherwise by
-/// sending the face's moved vertices back to rest, unless the face is an input
-/// sliver's child that stays a needle at rest too (detail::isInputSliverAtRest).
-/// What is left is inherited from the input: children of input slivers. Deleted elements are left
-/// flagged (compact afterwards). With `onlyWhereMoved` (the auto method),
+/// by subdivide(): needles by collapse, caps by flip or, where no flip helps
+/// and both ends of the cap's shortest edge are inserted vertices, by
+/// collapse, and otherwise by sending the face's moved vertices back to rest,
+/// unless the face is an input sliver's child that stays a needle at rest too
+/// (detail::isInputSliverAtRest). What is left is inherited from the input:
+/// children of input slivers. Deleted elements are left flagged (compact
+/// afterwards). With `onlyWhereMoved` (the auto method),
 /// a face none of whose vertices moved is left as it is: it lies on its
 /// input face, and a collapse would move the input's surface.
 /// \pre placeInsertedVertices() ran; FF topology up to date.
@@ -267,6 +280,9 @@ CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves
         s.removedFaces += std::size_t(removed);
       } else if (flipCap(f, labels)) {
         ++s.flips;
+      } else if (collapseNeedle(m, f, plan, angleRad, removed, /*capsBetweenInserted=*/true)) {
+        ++s.collapses;
+        s.removedFaces += std::size_t(removed);
       } else if (detail::isInputSliverAtRest(m, f, moves, angleRad)) {
         continue;
       } else if (std::size_t n = revertInsertedVertices(m, f, moves)) {
