@@ -290,3 +290,11 @@ TEST(LineAngleToSurface, AngleBetweenThePlanesLineAndTheSurface) {
   EXPECT_NEAR(es::lineAngleToSurface(side, side, chamfer), 90 * deg, 1e-12);         // parallel
   EXPECT_NEAR(es::lineAngleToSurface(side, top, Vec3(0, 0, 0)), 90 * deg, 1e-12);
 }
+
+TEST(CoincidentCorners, OnlyAnEdgeAtFloatRoundingOfTheLongestCounts) {
+  const Vec3 a(0, 0, 0), b(1, 0, 0);
+  EXPECT_TRUE(es::hasCoincidentCorners(a, b, b));                      // two corners at b
+  EXPECT_TRUE(es::hasCoincidentCorners(a, b, b + Vec3(0, 5e-6, 0)));   // within rounding
+  EXPECT_FALSE(es::hasCoincidentCorners(a, b, b + Vec3(0, 1e-3, 0)));  // a needle, not one point
+  EXPECT_FALSE(es::hasCoincidentCorners(a, b, Vec3(0.5, 0.001, 0)));   // a cap
+}

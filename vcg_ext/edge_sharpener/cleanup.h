@@ -54,13 +54,6 @@ int shortestEdgeIndex(const FaceType &f) {
   return best;
 }
 
-/// Whether two corners of triangle a b c lie at one point: an edge shorter
-/// than a float's rounding of the longest (1e-5 of it). Pure.
-inline bool hasCoincidentCorners(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
-  const double ab = (b - a).Norm(), bc = (c - b).Norm(), ca = (a - c).Norm();
-  return std::min({ab, bc, ca}) <= 1e-5 * std::max({ab, bc, ca});
-}
-
 /// Vertex `z` of face `f` seen from the faces around it: the vertices joined
 /// to it by an edge, and whether a border edge ends at it. vcglib's
 /// VVOrderedStarFF takes one vertex per face, so at a border vertex (k
@@ -182,7 +175,7 @@ bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan
     // A face with two corners at one point already (where several inserted
     // vertices and an input vertex meet at one target) has no orientation to
     // lose; a later collapse removes it.
-    if (detail::hasCoincidentCorners(q[0], q[1], q[2])) continue;
+    if (hasCoincidentCorners(q[0], q[1], q[2])) continue;
     const Vec3 before = detail::triangleNormal(q[0], q[1], q[2]);
     const Vec3 after = detail::triangleNormal(r[0], r[1], r[2]);
     if (!(before * after > 0)) return false;

@@ -209,6 +209,13 @@ inline double maxTriangleAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
       {angleBetween(b - a, c - a), angleBetween(c - b, a - b), angleBetween(a - c, b - c)});
 }
 
+/// Whether two corners of triangle a b c lie at one point: an edge shorter
+/// than a float's rounding of the longest (1e-5 of it). Pure.
+inline bool hasCoincidentCorners(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
+  const double ab = (b - a).Norm(), bc = (c - b).Norm(), ca = (a - c).Norm();
+  return std::min({ab, bc, ca}) <= 1e-5 * std::max({ab, bc, ca});
+}
+
 /// Interior angle at vertex `a` of triangle abc (the paper's weight).
 inline double cornerAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
   return angleBetween(b - a, c - a);
