@@ -393,6 +393,94 @@ inline Shape cylinderBlock() {
   return shape;
 }
 
+/// How a corner of a prism's outline is finished: left sharp, cut by a flat bevel
+/// `size` wide, or rounded by a fillet of radius `size` (16 facets): designed features a
+/// sharpener must keep, beside the sharp edges it must restore.
+struct CornerFinish {
+  enum Kind { Sharp, Bevel, Fillet } kind = Sharp;
+  double size = 0;
+};
+
+/// A convex polygon (counter-clockwise) with each corner finished as `finish` says.
+inline std::vector<Point2d> finishedOutline(const std::vector<Point2d>& corners,
+                                            const std::vector<CornerFinish>& finish) {
+  constexpr int kFilletFacets = 16;
+  std::vector<Point2d> outline;
+  const std::size_t n = corners.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point2d& p = corners[i];
+    Point2d toPrev = corners[(i + n - 1) % n] - p, toNext = corners[(i + 1) % n] - p;
+    toPrev /= toPrev.Norm();
+    toNext /= toNext.Norm();
+    const double interior = std::acos(std::clamp(dot2(toPrev, toNext), -1.0, 1.0));
+    const CornerFinish& f = finish[i];
+    if (f.kind == CornerFinish::Sharp) {
+      outline.push_back(p);
+    } else if (f.kind == CornerFinish::Bevel) {
+      const double cut = f.size / (2 * std::sin(interior / 2));  // along each side
+      outline.push_back(p + toPrev * cut);
+      outline.push_back(p + toNext * cut);
+    } else {
+      const double tangent = f.size / std::tan(interior / 2);
+      Point2d bisector = toPrev + toNext;
+      bisector /= bisector.Norm();
+      const Point2d centre = p + bisector * (f.size / std::sin(interior / 2));
+      const Point2d from = p + toPrev * tangent - centre, to = p + toNext * tangent - centre;
+      const double a0 = std::atan2(from.Y(), from.X());
+      double sweep = std::atan2(to.Y(), to.X()) - a0;
+      while (sweep < 0) sweep += 2 * M_PI;  // counter-clockwise, the short way round
+      for (int k = 0; k <= kFilletFacets; ++k) {
+        const double a = a0 + sweep * k / kFilletFacets;
+        outline.push_back(centre + Point2d(std::cos(a), std::sin(a)) * f.size);
+      }
+    }
+  }
+  return outline;
+}
+
+/// Box 1.6 x 1.0 x 0.6 whose vertical edges are two bevels (0.03 and 0.07 wide) and two
+/// fillets (radii 0.03 and 0.07): one to three and a half cells at 1% of the diagonal.
+inline Shape bevelledBlock() {
+  Prism prism;
+  prism.outline = finishedOutline({{-0.8, -0.5}, {0.8, -0.5}, {0.8, 0.5}, {-0.8, 0.5}},
+                                  {{CornerFinish::Bevel, 0.03},
+                                   {CornerFinish::Fillet, 0.03},
+                                   {CornerFinish::Bevel, 0.07},
+                                   {CornerFinish::Fillet, 0.07}});
+  prism.fanCenter = Point2d(0, 0);
+  prism.zMin = -0.3;
+  prism.zMax = 0.3;
+  return prismShape("bevelled_block",
+                    "box 1.6 x 1.0 x 0.6, vertical edges finished by designed bevels 0.03 and "
+                    "0.07 wide and fillets of radii 0.03 and 0.07; sharp edges round the caps",
+                    prism);
+}
+
+/// A hexagonal prism whose corners are finished by bevels and fillets of other sizes,
+/// one left sharp, and whose sides meet at other angles than bevelledBlock's.
+inline Shape finishedHexPrism() {
+  Prism prism;
+  prism.outline = finishedOutline({{-0.85, -0.35},
+                                   {-0.2, -0.7},
+                                   {0.7, -0.55},
+                                   {0.9, 0.1},
+                                   {0.35, 0.65},
+                                   {-0.6, 0.5}},
+                                  {{CornerFinish::Fillet, 0.05},
+                                   {CornerFinish::Bevel, 0.05},
+                                   {CornerFinish::Sharp, 0},
+                                   {CornerFinish::Fillet, 0.1},
+                                   {CornerFinish::Bevel, 0.1},
+                                   {CornerFinish::Fillet, 0.02}});
+  prism.fanCenter = Point2d(0, 0);
+  prism.zMin = -0.35;
+  prism.zMax = 0.35;
+  return prismShape("finished_hexprism",
+                    "hexagonal prism 1.75 x 1.35 x 0.7, vertical edges finished by designed "
+                    "bevels (0.05, 0.1 wide) and fillets (radii 0.02, 0.05, 0.1), one sharp",
+                    prism);
+}
+
 inline TriangleList uvSphere(double radius, int rings, int segments) {
   TriangleList mesh;
   const int north = mesh.addVertex(Point3d(0, 0, radius));
@@ -489,6 +577,10 @@ inline const std::vector<Shape>& allShapes() {
                                detail::sphere()};
     // The L-block tilted so that no face, edge or corner is aligned with the grid.
     list.push_back(rotated(list[1], Point3d(1, 2, 3), 0.6, "lblock_tilted"));
+    // Designed bevels and fillets beside sharp edges, oblique to the grid.
+    list.push_back(rotated(detail::bevelledBlock(), Point3d(3, 1, 2), 0.5, "bevelled_block"));
+    list.push_back(
+        rotated(detail::finishedHexPrism(), Point3d(-1, 2, 2), 0.7, "finished_hexprism"));
     return list;
   }();
   return shapes;

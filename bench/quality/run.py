@@ -51,7 +51,7 @@ SWEPT_VARIANTS = METHODS
 DEFAULT_MULTIPLIER = 2.0
 SWEEP = (1.5, 2.0, 2.5, 3.0)
 GENERATED_SHAPES = ("cube", "lblock", "lblock_tilted", "wedge", "pyramid", "cross_prism",
-                    "cylinder_block", "sphere")
+                    "cylinder_block", "sphere", "bevelled_block", "finished_hexprism")
 POINT_SAMPLES = 100000
 # mesh-distance in MeshLab's sampling mode: this many vertex, edge and face samples per side.
 DISTANCE_SAMPLES = 100000

@@ -19,6 +19,10 @@
   shapes; project MC 1%: max x4.31 / RMS x9.59 over seven (the evidence guard leaves a few of
   the pyramid's acute features chamfered). And, as for every method above, no output is worse
   than its input.
+- The shapes with designed bevels and fillets (bevelled_block, finished_hexprism): the default
+  method makes none of them worse. The paper and extended methods are not held to that there
+  (they cut a bevel or a fillet back to the edge its flanks meet at, by design), and these
+  shapes are left out of the means above, which were measured without them.
 """
 import math
 
@@ -29,6 +33,8 @@ FLOOR = 1e-4        # % of the diagonal: measurement noise of float meshes
 UNCHANGED = 1e-3    # % of the diagonal
 CAP = 10.0          # factors are capped in the means (the cube can come out exact)
 # (max factor, RMS factor) at about 80% of the measured geometric means
+# Designed bevels and fillets beside sharp edges: only the default method must leave them.
+DESIGNED_FEATURES = {"bevelled_block", "finished_hexprism"}
 MIN_FACTORS = {"paper": {"umr": (1.08, 1.6), "mc": (1.1, 1.3)},
                "extended": {"umr": (1.25, 5.3), "mc": (3.7, 7.7)},
                "auto": {"umr": (1.18, 4.9), "mc": (3.4, 7.7)}}
@@ -60,6 +66,9 @@ def main():
             frms = max(b["rms"], FLOOR) / max(a["rms"], FLOOR)
             print(f"  {tag:42s} max {b['max']:.4f} -> {a['max']:.4f} (x{fmax:.2f})  "
                   f"RMS {b['rms']:.5f} -> {a['rms']:.5f} (x{frms:.2f})")
+            designed = c["model"] in DESIGNED_FEATURES
+            if designed and r["method"] != "auto":
+                continue
             if a["max"] > b["max"] * (1 + TOL) + FLOOR:
                 failures.append(f"{tag}: max error grew {b['max']:.4f} -> {a['max']:.4f}")
             if a["rms"] > b["rms"] * (1 + TOL) + FLOOR:
@@ -69,12 +78,12 @@ def main():
                 if ch is None or ch > UNCHANGED:
                     failures.append(f"{tag}: a mesh without chamfers was changed by {ch}% of "
                                     "the diagonal")
-            elif c["input"] in MIN_FACTORS["paper"]:
+            elif c["input"] in MIN_FACTORS["paper"] and not designed:
                 factors.setdefault((c["input"], r["method"]), []).append(
                     (min(fmax, CAP), min(frms, CAP)))
     if made.get("umr", 0) < 4:
         failures.append(f"only {made.get('umr', 0)} shapes were resampled by MeshLab's Uniform "
-                        "Mesh Resampling (expected at least 4 of 8)")
+                        "Mesh Resampling (expected at least 4 of 10)")
     for (kind, method), v in sorted(factors.items()):
         gm = gmean([x[0] for x in v]), gmean([x[1] for x in v])
         print(f"geometric mean, {kind} 1%, {method}: max x{gm[0]:.2f}, RMS x{gm[1]:.2f} "
