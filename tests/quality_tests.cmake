@@ -20,6 +20,9 @@
 #   quality.thin_wall           test_meshes/real/tube.off (a wall 1.3 cells thick) by OpenVDB and
 #                               MeshLab's CSG at 1%: the default method makes neither worse
 #                               (skipped without OpenVDB).
+#   quality.on_plane            lblock_tilted and plate_holes by MeshLab's Isotropic Explicit
+#                               Remeshing: exactly sampled features with a few far samples are
+#                               sharpened, none made worse.
 #   quality.smooth_planes       cross_prism by MeshLab's Screened Poisson: the default method
 #                               sharpens a smooth part made of planes; rocker-arm (../shared, a
 #                               freeform part) by OpenVDB at 1% not made worse (checked when
@@ -29,5 +32,5 @@
 # ../shared. Run: ctest -L quality
 edge_sharpener_meshlab_script_tests(quality
   fast_subset 900  hausdorff_crosscheck 600  hausdorff_meshlab_mode 600  families_subset 900
-  fandisk_targets 900  cad_as_is 600  thin_wall 600  smooth_planes 600
+  fandisk_targets 900  cad_as_is 600  thin_wall 600  smooth_planes 600  on_plane 600
   ENVIRONMENT "ES_BUILD_DIR=${CMAKE_BINARY_DIR}")

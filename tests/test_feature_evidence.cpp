@@ -62,6 +62,7 @@ es::Feature feature(std::size_t vertices, std::size_t moved, double offPlane = 0
   f.vertices = vertices;
   f.moved = moved;
   f.maxOffPlane = offPlane;
+  f.offPlaneQ90 = offPlane;  // every sample that far
   f.corner = corner;
   return f;
 }
@@ -118,6 +119,32 @@ TEST(FeatureEvidence, WeakWhenShortRefusedOrOffItsPlanes) {
 
 // A vertex whose target crosses to another sheet of the input counts as one
 // the other tests refused.
+TEST(FeatureEvidence, AFewFarSamplesOfAnExactlySampledFeatureDoNotMakeItWeak) {
+  const es::SharpenOptions opt;
+  es::Feature f = feature(40, 40, /*offPlane=*/2.9);
+  f.offPlaneQ90 = 0.0;  // the rest on their planes: a remesher that reprojects
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  f.offPlaneQ90 = 0.05;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  f.offPlaneQ90 = 0.2;  // a blend along it
+  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  es::SharpenOptions everyFarSample;
+  everyFarSample.onPlaneSpacings = 0;
+  f.offPlaneQ90 = 0.0;
+  EXPECT_TRUE(es::featureEvidenceIsWeak(f, everyFarSample));
+}
+
+TEST(FeatureEvidence, QuantileIsTheNearestRank) {
+  std::vector<double> none;
+  EXPECT_EQ(es::detail::quantileOf(none, 0.9), 0.0);
+  std::vector<double> values = {5, 0, 9, 1, 2, 3, 4, 6, 7, 8, 10};  // 0..10
+  EXPECT_EQ(es::detail::quantileOf(values, 0.9), 9.0);
+  EXPECT_EQ(es::detail::quantileOf(values, 0.5), 5.0);
+  EXPECT_EQ(es::detail::quantileOf(values, 1.0), 10.0);
+  std::vector<double> three = {0.0, 0.0, 3.0};  // a short feature: its farthest sample counts
+  EXPECT_EQ(es::detail::quantileOf(three, 0.9), 3.0);
+}
+
 TEST(FeatureEvidence, VerticesCrossingToAnotherSheetCountAsRefused) {
   es::SharpenOptions opt;  // 40% refused
   es::Feature f = feature(10, 10);

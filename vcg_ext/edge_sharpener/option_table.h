@@ -295,6 +295,12 @@ inline const std::vector<OptionSpec> &optionTable() {
        "from the plane fitted to its flank: a blend, a curved face or a thin wall meets it.",
        T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
        ES_REAL(maxFeatureOffPlaneSpacings)},
+      {"on_plane_spacings", "--on-plane", "", "On-plane tolerance",
+       "Auto method: ...unless nine in ten of the feature's vertices lie within this distance of "
+       "their planes (an exactly sampled feature whose far vertices lie where it meets another "
+       "part: the new vertices they source stay at rest; 0: every far vertex counts).",
+       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(onPlaneSpacings)},
       {"min_feature_vertices", "--min-feature-vertices", "", "Minimum feature size",
        "Auto method: a feature with fewer new vertices than this stays as it was.",
        T::Integer, G::EvidenceGuard, "vertices", 0, 1000, false, kNotInMeshLab, {}, {},

@@ -162,6 +162,12 @@ struct SharpenOptions {
   /// ...or when one of its source vertices lies off its plane by more than
   /// this many sample spacings...
   double maxFeatureOffPlaneSpacings = 0.6;
+  /// ...unless nine in ten of its source vertices lie within this many
+  /// sample spacings of their planes: a feature sampled exactly (a remesher
+  /// that reprojects onto the surface) whose few far samples lie where it
+  /// meets another part, not on a blend along it. The new vertices those
+  /// far samples source stay at rest. 0: every far sample counts.
+  double onPlaneSpacings = 0.05;
   /// ...or when it has fewer than this many inserted vertices...
   int minFeatureVertices = 3;
   /// ...or, for an edge, when its flanks' planes meet at less than this

@@ -53,6 +53,11 @@ struct Feature {
   /// extrapolate, up to the sampler's rounding along the edge; where a
   /// blend, a curved face or a thin wall meets the edge, some lie far off.
   double maxOffPlane = 0;
+  /// The distance from their planes (sample spacings) within which nine in
+  /// ten of its source vertices lie: near 0 where the sampler put its
+  /// samples on the surface, whatever a few samples where it meets another
+  /// part do.
+  double offPlaneQ90 = 0;
   /// Edge features: the median angle (radians, planeMeetingAngle) at which
   /// its vertices' two flank planes meet; pi/2 where none has both planes.
   double flankAngleRad = M_PI / 2;
@@ -154,7 +159,26 @@ inline double medianOf(std::vector<double> &values) {
   std::nth_element(values.begin(), mid, values.end());
   return *mid;
 }
+
+/// The value below which a fraction `q` (in [0, 1]) of `values` lie (the
+/// nearest rank; 0 for none). Reorders `values`.
+inline double quantileOf(std::vector<double> &values, double q) {
+  if (values.empty()) return 0;
+  auto at = values.begin() + std::size_t(std::lround(q * double(values.size() - 1)));
+  std::nth_element(values.begin(), at, values.end());
+  return *at;
+}
 }  // namespace detail
+
+/// How far source vertex `s` lies from its plane at its rest position, in
+/// sample spacings (`spacing`); 0 where it has no plane.
+template <class MeshType>
+double offPlaneSpacings(const SupportPlanes &support, const VertexMoves<MeshType> &moves,
+                        std::size_t s, double spacing) {
+  const Plane &pl = support.plane(s);
+  if (pl.normal.SquaredNorm() == 0) return 0;
+  return std::abs(pl.normal * (moves.exactRest(s) - pl.point)) / spacing;
+}
 
 /// Counts, per feature, its inserted vertices still in the mesh and those
 /// placed on their planes (Feature::vertices, Feature::moved).
@@ -173,6 +197,7 @@ void countFeatureMoves(const MeshType &m, const VertexMoves<MeshType> &moves,
 
 /// The counts (countFeatureMoves), how far each feature's farthest source
 /// vertex lies from its plane, at its rest position (Feature::maxOffPlane),
+/// and within what distance nine in ten of them lie (Feature::offPlaneQ90),
 /// the median angle between its edge vertices' flanks
 /// (Feature::flankAngleRad) and between their line and the chamfer
 /// (Feature::lineChamferAngleRad).
@@ -185,6 +210,11 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
   const double spacing = support.sampleSpacing > 0 ? support.sampleSpacing : 1.0;
   for (Feature &f : features) f.maxOffPlane = 0;
   std::vector<std::vector<double>> angles(features.size()), lineAngles(features.size());
+  // Each (feature, source) pair once: a source serves several of a feature's vertices.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> sources;
+  const auto offPlaneOf = [&](std::size_t s) {
+    return offPlaneSpacings(support, moves, s, spacing);
+  };
   for (std::size_t k = 0; k < featureOf.size(); ++k) {
     if (m.vert[moves.firstInserted() + k].IsD()) continue;
     double &farthest = features[featureOf[k]].maxOffPlane;
@@ -200,13 +230,17 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
     }
     for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
       const std::size_t s = plan.inserted[k].original[i];
-      const Plane &pl = support.plane(s);
-      if (pl.normal.SquaredNorm() == 0) continue;
-      farthest =
-          std::max(farthest, std::abs(pl.normal * (moves.exactRest(s) - pl.point)) / spacing);
+      if (support.plane(s).normal.SquaredNorm() == 0) continue;
+      farthest = std::max(farthest, offPlaneOf(s));
+      sources.emplace_back(featureOf[k], std::uint32_t(s));
     }
   }
+  std::sort(sources.begin(), sources.end());
+  sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
+  std::vector<std::vector<double>> offPlane(features.size());
+  for (const auto &[c, s] : sources) offPlane[c].push_back(offPlaneOf(s));
   for (std::size_t c = 0; c < features.size(); ++c) {
+    features[c].offPlaneQ90 = detail::quantileOf(offPlane[c], 0.9);
     features[c].flankAngleRad = angles[c].empty() ? M_PI / 2 : detail::medianOf(angles[c]);
     features[c].lineChamferAngleRad = lineAngles[c].empty() ? 0 : detail::medianOf(lineAngles[c]);
   }
@@ -326,14 +360,17 @@ inline double medianLift(const std::vector<double> &lifts) {
 /// be a feature, an edge whose flanks meet at too shallow an angle or on a
 /// line that crosses its chamfer instead of running along it, too many
 /// of its vertices refused by the other tests, or one of its samples far off
-/// the plane its flank extrapolates.
+/// the plane its flank extrapolates, unless nine in ten of them lie on their
+/// planes (then only the far samples' new vertices stay at rest:
+/// EvidenceGuard::hasFarSource).
 inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
   if (!f.corner && f.vertices < std::size_t(opt.minFeatureVertices)) return true;
   if (!f.corner && f.flankAngleRad < opt.minFeatureAngleRad) return true;
   if (!f.corner && opt.maxFeatureLineChamferAngleRad > 0 &&
       f.lineChamferAngleRad > opt.maxFeatureLineChamferAngleRad)
     return true;
-  if (f.maxOffPlane > opt.maxFeatureOffPlaneSpacings) return true;
+  const bool sampledOnItsPlanes = opt.onPlaneSpacings > 0 && f.offPlaneQ90 <= opt.onPlaneSpacings;
+  if (f.maxOffPlane > opt.maxFeatureOffPlaneSpacings && !sampledOnItsPlanes) return true;
   return double(f.vertices - f.moved + f.crossed) >
          opt.maxFeatureFallbackFraction * double(f.vertices);
 }
@@ -431,6 +468,20 @@ class EvidenceGuard {
     std::vector<double> lifts;
     std::vector<char> weak;
   };
+
+  /// Whether inserted vertex `k` (split plan order) has a source farther
+  /// from its plane than the off-plane bound. Its feature, when not weak,
+  /// was kept on the strength of its other samples (Feature::offPlaneQ90):
+  /// such a sample does not vouch for the vertices it sources.
+  bool hasFarSource(std::size_t k) const {
+    const InsertedVertexSource &source = moves_.plan().inserted[k];
+    const double spacing = support_.sampleSpacing > 0 ? support_.sampleSpacing : 1.0;
+    for (int i = 0; i < source.originalCount; ++i)
+      if (offPlaneSpacings(support_, moves_, source.original[i], spacing) >
+          opt_.maxFeatureOffPlaneSpacings)
+        return true;
+    return false;
+  }
   Judgement judge() {
     Judgement out;
     EvidenceStats &stats = out.stats;
@@ -454,7 +505,8 @@ class EvidenceGuard {
   }
 
   /// Sends back to rest every move of the features whose evidence is weak
-  /// (weakFeatures): their inserted vertices (as Placement::WeakEvidence)
+  /// (weakFeatures), and of the other features' vertices with a far source
+  /// (hasFarSource): their inserted vertices (as Placement::WeakEvidence)
   /// and the zone vertices projected beside them. Runs before the cleanup: a
   /// feature left as it was is never touched by the cleanup's collapses and
   /// flips, so its faces are the input's exactly.
@@ -465,7 +517,7 @@ class EvidenceGuard {
     const std::vector<char> &weak = judged.weak;
     const std::size_t first = moves_.firstInserted();
     for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
-      if (!weak[featureOf_[k]] || m_.vert[first + k].IsD()) continue;
+      if (m_.vert[first + k].IsD() || !(weak[featureOf_[k]] || hasFarSource(k))) continue;
       if (moves_.isMoved(first + k)) {
         moves_.sendBack(first + k, Placement::WeakEvidence);
         ++stats.reverted;
