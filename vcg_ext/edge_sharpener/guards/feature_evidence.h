@@ -171,12 +171,13 @@ inline double quantileOf(std::vector<double> &values, double q) {
 }  // namespace detail
 
 /// How far source vertex `s` lies from its plane at its rest position, in
-/// sample spacings (`spacing`); 0 where it has no plane.
+/// sample spacings; 0 where it has no plane.
 template <class MeshType>
 double offPlaneSpacings(const SupportPlanes &support, const VertexMoves<MeshType> &moves,
-                        std::size_t s, double spacing) {
+                        std::size_t s) {
   const Plane &pl = support.plane(s);
   if (pl.normal.SquaredNorm() == 0) return 0;
+  const double spacing = support.sampleSpacing > 0 ? support.sampleSpacing : 1.0;
   return std::abs(pl.normal * (moves.exactRest(s) - pl.point)) / spacing;
 }
 
@@ -207,17 +208,11 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
                      std::vector<Feature> &features) {
   countFeatureMoves(m, moves, featureOf, features);
   const SplitPlan &plan = moves.plan();
-  const double spacing = support.sampleSpacing > 0 ? support.sampleSpacing : 1.0;
-  for (Feature &f : features) f.maxOffPlane = 0;
   std::vector<std::vector<double>> angles(features.size()), lineAngles(features.size());
   // Each (feature, source) pair once: a source serves several of a feature's vertices.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> sources;
-  const auto offPlaneOf = [&](std::size_t s) {
-    return offPlaneSpacings(support, moves, s, spacing);
-  };
   for (std::size_t k = 0; k < featureOf.size(); ++k) {
     if (m.vert[moves.firstInserted() + k].IsD()) continue;
-    double &farthest = features[featureOf[k]].maxOffPlane;
     if (plan.inserted[k].originalCount == 2) {
       const Vec3 &a = support.plane(plan.inserted[k].original[0]).normal;
       const Vec3 &b = support.plane(plan.inserted[k].original[1]).normal;
@@ -230,16 +225,17 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
     }
     for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
       const std::size_t s = plan.inserted[k].original[i];
-      if (support.plane(s).normal.SquaredNorm() == 0) continue;
-      farthest = std::max(farthest, offPlaneOf(s));
-      sources.emplace_back(featureOf[k], std::uint32_t(s));
+      if (support.plane(s).normal.SquaredNorm() > 0)
+        sources.emplace_back(featureOf[k], std::uint32_t(s));
     }
   }
   std::sort(sources.begin(), sources.end());
   sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
   std::vector<std::vector<double>> offPlane(features.size());
-  for (const auto &[c, s] : sources) offPlane[c].push_back(offPlaneOf(s));
+  for (const auto &[c, s] : sources) offPlane[c].push_back(offPlaneSpacings(support, moves, s));
   for (std::size_t c = 0; c < features.size(); ++c) {
+    features[c].maxOffPlane =
+        offPlane[c].empty() ? 0 : *std::max_element(offPlane[c].begin(), offPlane[c].end());
     features[c].offPlaneQ90 = detail::quantileOf(offPlane[c], 0.9);
     features[c].flankAngleRad = angles[c].empty() ? M_PI / 2 : detail::medianOf(angles[c]);
     features[c].lineChamferAngleRad = lineAngles[c].empty() ? 0 : detail::medianOf(lineAngles[c]);
@@ -475,10 +471,8 @@ class EvidenceGuard {
   /// such a sample does not vouch for the vertices it sources.
   bool hasFarSource(std::size_t k) const {
     const InsertedVertexSource &source = moves_.plan().inserted[k];
-    const double spacing = support_.sampleSpacing > 0 ? support_.sampleSpacing : 1.0;
     for (int i = 0; i < source.originalCount; ++i)
-      if (offPlaneSpacings(support_, moves_, source.original[i], spacing) >
-          opt_.maxFeatureOffPlaneSpacings)
+      if (offPlaneSpacings(support_, moves_, source.original[i]) > opt_.maxFeatureOffPlaneSpacings)
         return true;
     return false;
   }
