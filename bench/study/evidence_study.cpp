@@ -59,8 +59,8 @@ int main(int argc, char **argv) {
     // The same verdicts without the off-plane test, to study a replacement for it.
     es::SharpenOptions withoutOffPlane = opt;
     withoutOffPlane.maxFeatureOffPlaneSpacings = 1e30;
-    const std::vector<char> weakOtherwise =
-        es::weakFeatures(plan, features, featureOf, judged.stats.medianLift, measures, withoutOffPlane);
+    const std::vector<char> weakOtherwise = es::weakFeatures(
+        plan, features, featureOf, judged.stats.medianLift, measures, withoutOffPlane);
     const double refused = judged.stats.refusedFraction;
     // Median distance and lift of each feature's moves (distance in sample spacings).
     std::vector<std::vector<double>> moveLengths(features.size()), featureLifts(features.size());
@@ -111,11 +111,9 @@ int main(int argc, char **argv) {
     for (std::size_t k = 0; k < plan.inserted.size(); ++k)
       for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
         const std::size_t s = plan.inserted[k].original[i];
-        const es::Plane &pl = zones.support.plane(s);
-        if (sourceSeen[s] || pl.normal.SquaredNorm() == 0) continue;
+        if (sourceSeen[s] || zones.support.plane(s).normal.SquaredNorm() == 0) continue;
         sourceSeen[s] = 1;
-        offPlane[featureOf[k]].push_back(std::abs(pl.normal * (moves.exactRest(s) - pl.point)) /
-                                         spacing);
+        offPlane[featureOf[k]].push_back(es::offPlaneSpacings(zones.support, moves, s));
       }
     // Per moved edge vertex, how far its sources lie off their planes over how far they
     // lie from its target (0: samples on the flanks' planes; a bevel's or a blend's: large).
@@ -126,27 +124,25 @@ int main(int argc, char **argv) {
       double worstRatio = 0;
       for (int i = 0; i < 2; ++i) {
         const std::size_t s = plan.inserted[k].original[i];
-        const es::Plane &pl = zones.support.plane(s);
         const double reach = (es::positionOf(&m.vert[v]) - moves.exactRest(s)).Norm();
-        if (pl.normal.SquaredNorm() == 0 || !(reach > 0)) continue;
+        if (!(reach > 0)) continue;
         worstRatio =
-            std::max(worstRatio, std::abs(pl.normal * (moves.exactRest(s) - pl.point)) / reach);
+            std::max(worstRatio, es::offPlaneSpacings(zones.support, moves, s) * spacing / reach);
       }
       roundness[featureOf[k]].push_back(worstRatio);
     }
     const auto quantile = [](std::vector<double> v, double q) {
-      if (v.empty()) return 0.0;
-      std::sort(v.begin(), v.end());
-      return v[std::size_t(q * double(v.size() - 1) + 0.5)];
+      return es::detail::quantileOf(v, q);  // on a copy: it reorders
     };
     for (std::size_t c = 0; c < features.size(); ++c) {
       const es::Feature &f = features[c];
       if (f.moved == 0) continue;
-      std::printf("{\"off_plane_q50\": %.4f, \"off_plane_q75\": %.4f, \"off_plane_q90\": %.4f, "
-                  "\"round_q25\": %.4f, \"round_q50\": %.4f, \"round_q75\": %.4f, \"weak_otherwise\": %d, ",
-                  quantile(offPlane[c], 0.5), quantile(offPlane[c], 0.75),
-                  quantile(offPlane[c], 0.9), quantile(roundness[c], 0.25),
-                  quantile(roundness[c], 0.5), quantile(roundness[c], 0.75), int(weakOtherwise[c]));
+      std::printf(
+          "{\"off_plane_q50\": %.4f, \"off_plane_q75\": %.4f, \"off_plane_q90\": %.4f, "
+          "\"round_q25\": %.4f, \"round_q50\": %.4f, \"round_q75\": %.4f, \"weak_otherwise\": %d, ",
+          quantile(offPlane[c], 0.5), quantile(offPlane[c], 0.75), quantile(offPlane[c], 0.9),
+          quantile(roundness[c], 0.25), quantile(roundness[c], 0.5), quantile(roundness[c], 0.75),
+          int(weakOtherwise[c]));
       std::printf(
           "\"case\": \"%s\", \"refused\": %.4f, \"mesh_lift\": %.4f, \"noise\": %.4f, \"planar\": "
           "%.4f, "
