@@ -5,7 +5,10 @@
 // change of the moved vertices' distance to the reference, in sample
 // spacings (negative: closer). bench/study/evidence_study.py runs it over the
 // quality benchmark's cached inputs of one half.
-//   evidence-study INPUT REFERENCE [CASE-NAME]
+// With --vertices it prints one line per moved inserted vertex of a feature
+// the guard keeps instead: its move and lift, and its own change of distance
+// to the reference (a per-vertex bound's study).
+//   evidence-study INPUT REFERENCE [CASE-NAME] [--vertices]
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -24,6 +27,7 @@ int main(int argc, char **argv) {
     return 2;
   }
   const std::string name = argc > 3 ? argv[3] : argv[1];
+  const bool perVertex = argc > 4 && std::string(argv[4]) == "--vertices";
   try {
     es::Mesh m, reference;
     es::io::loadMesh(argv[1], m);
@@ -94,6 +98,33 @@ int main(int argc, char **argv) {
       before[c] += d0 / spacing;
       worst[c] = std::max(worst[c], (d1 - d0) / spacing);
     };
+    if (perVertex) {
+      for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+        const std::size_t v = moves.firstInserted() + k;
+        const std::size_t c = featureOf[k];
+        if (m.vert[v].IsD() || !moves.isMoved(v) || weak[c]) continue;
+        const es::Vec3 target = es::positionOf(&m.vert[v]), rest = plan.inserted[k].rest;
+        const double length = (target - rest).Norm() / spacing;
+        double sourceOffPlane = 0, reach = 0;
+        for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
+          const std::size_t s = plan.inserted[k].original[i];
+          sourceOffPlane = std::max(sourceOffPlane, es::offPlaneSpacings(zones.support, moves, s));
+          reach = std::max(reach, (target - moves.exactRest(s)).Norm() / spacing);
+        }
+        if (sourceOffPlane > opt.maxFeatureOffPlaneSpacings) continue;  // a far sample's
+        const double d0 = distance(rest) / spacing, d1 = distance(target) / spacing;
+        std::printf(
+            "{\"case\": \"%s\", \"feature\": %zu, \"corner\": %d, \"feature_vertices\": "
+            "%zu, \"feature_lift\": %.4f, \"length\": %.4f, \"lift\": %.4f, \"source_off_plane\": "
+            "%.4f, \"reach\": %.4f, \"sent_back\": %d, \"before\": %.5f, \"after\": %.5f, \"x\": "
+            "[%.6g, %.6g, "
+            "%.6g]}\n",
+            name.c_str(), c, int(features[c].corner), features[c].vertices,
+            es::medianLift(featureLifts[c]), length, lifts[k], sourceOffPlane, reach,
+            int(guard.vertexIsWeak(k)), d0, d1, target[0], target[1], target[2]);
+      }
+      return 0;
+    }
     for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
       const std::size_t v = moves.firstInserted() + k;
       if (m.vert[v].IsD()) continue;

@@ -4,6 +4,8 @@ one JSON line per feature (bench/study/evidence_study.cpp), for choosing the evi
 guard's rule on the tuning half and checking it on the validation half.
 
   bench/study/evidence_study.py --build BUILD --half tuning|validation --out FILE.jsonl
+
+With --vertices, one line per moved vertex of a kept feature instead.
 """
 import argparse
 import concurrent.futures
@@ -35,6 +37,8 @@ def main():
     ap.add_argument("--half", choices=("tuning", "validation"), required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--vertices", action="store_true",
+                    help="one line per moved vertex of a kept feature")
     args = ap.parse_args()
     cache = os.path.join(args.build, "quality-cache")
     split = json.load(open(os.path.join(SOURCE, "bench", "quality", "split.json")))
@@ -55,7 +59,8 @@ def main():
                 jobs.append((p, refs[name], key))
 
     def run(job):
-        p = subprocess.run([tool, *job], capture_output=True, text=True)
+        extra = ["--vertices"] if args.vertices else []
+        p = subprocess.run([tool, *job, *extra], capture_output=True, text=True)
         return p.stdout
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool, open(args.out, "w") as out:
         for text in pool.map(run, jobs):
