@@ -134,6 +134,25 @@ TEST(FeatureEvidence, AFewFarSamplesOfAnExactlySampledFeatureDoNotMakeItWeak) {
   EXPECT_TRUE(es::featureEvidenceIsWeak(f, everyFarSample));
 }
 
+// A vertex of a feature kept goes back on its own evidence: a far sample,
+// or a long move from samples off their planes.
+TEST(FeatureEvidence, ALongMoveNeedsItsSamplesOnTheirPlanes) {
+  const es::SharpenOptions opt;  // far: 0.6 spacings; long: 2 spacings, 0.3 off
+  const bool edge = false, corner = true;
+  EXPECT_FALSE(es::vertexEvidenceIsWeak(0.5, 0.0, edge, opt));
+  EXPECT_TRUE(es::vertexEvidenceIsWeak(0.5, 0.7, edge, opt));  // a far sample, whatever the move
+  EXPECT_TRUE(es::vertexEvidenceIsWeak(0.5, 0.7, corner, opt));
+  EXPECT_FALSE(es::vertexEvidenceIsWeak(0.9, 0.5, edge, opt));   // short: the feature's bound
+  EXPECT_FALSE(es::vertexEvidenceIsWeak(2.5, 0.25, edge, opt));  // long, samples on their planes
+  EXPECT_TRUE(es::vertexEvidenceIsWeak(2.5, 0.35, edge, opt));
+  EXPECT_FALSE(es::vertexEvidenceIsWeak(2.5, 0.35, corner, opt));  // pinned by three planes
+  EXPECT_FALSE(es::vertexEvidenceIsWeak(2.0, 0.35, edge, opt));    // not longer than the bound
+  es::SharpenOptions off = opt;
+  off.longMoveSpacings = 0;
+  EXPECT_FALSE(es::vertexEvidenceIsWeak(2.5, 0.35, edge, off));
+  EXPECT_TRUE(es::vertexEvidenceIsWeak(2.5, 0.7, edge, off));
+}
+
 TEST(FeatureEvidence, QuantileIsTheNearestRank) {
   std::vector<double> none;
   EXPECT_EQ(es::detail::quantileOf(none, 0.9), 0.0);

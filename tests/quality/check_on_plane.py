@@ -6,7 +6,7 @@ A feature with one source vertex far off its plane (more than 0.6 sample spacing
 stay chamfered whole. Where nine in ten of its samples lie within 0.05 spacings of their
 planes (a remesher that reprojects onto the surface), it is sharpened and only the new
 vertices of its far samples stay at rest (feature_evidence.h: Feature::offPlaneQ90,
-hasFarSource). Asserted: every input made was sharpened and measured and none came out
+vertexIsWeak). Asserted: every input made was sharpened and measured and none came out
 worse (families.is_worse: max up > 2% or RMS up > 1%); lblock_tilted at IER 2% gains at least
 MIN_LBLOCK_RMS_FACTOR in RMS (measured x3.86 when this test was written, x2.50 with the far
 samples counting, `--on-plane 0`); plate_holes at IER 1%, whose far samples lie on its

@@ -168,6 +168,13 @@ struct SharpenOptions {
   /// meets another part, not on a blend along it. The new vertices those
   /// far samples source stay at rest. 0: every far sample counts.
   double onPlaneSpacings = 0.05;
+  /// In a feature kept, a new edge vertex moved farther than this many sample
+  /// spacings from its chamfer stays at rest when one of its source vertices
+  /// lies more than `maxLongMoveOffPlaneSpacings` off its plane: a long
+  /// extrapolation magnifies the misfit such a sample shows (a curved petal
+  /// whose planes meet beyond the tip a reconstruction rounded). 0: off.
+  double longMoveSpacings = 2.0;
+  double maxLongMoveOffPlaneSpacings = 0.3;
   /// ...or when it has fewer than this many inserted vertices...
   int minFeatureVertices = 3;
   /// ...or, for an edge, when its flanks' planes meet at less than this

@@ -358,7 +358,7 @@ inline double medianLift(const std::vector<double> &lifts) {
 /// of its vertices refused by the other tests, or one of its samples far off
 /// the plane its flank extrapolates, unless nine in ten of them lie on their
 /// planes (then only the far samples' new vertices stay at rest:
-/// EvidenceGuard::hasFarSource).
+/// EvidenceGuard::vertexIsWeak).
 inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
   if (!f.corner && f.vertices < std::size_t(opt.minFeatureVertices)) return true;
   if (!f.corner && f.flankAngleRad < opt.minFeatureAngleRad) return true;
@@ -369,6 +369,22 @@ inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
   if (f.maxOffPlane > opt.maxFeatureOffPlaneSpacings && !sampledOnItsPlanes) return true;
   return double(f.vertices - f.moved + f.crossed) >
          opt.maxFeatureFallbackFraction * double(f.vertices);
+}
+
+/// Whether one new vertex of a feature kept has too little evidence of its
+/// own for its move (sendBack): a source vertex `sourceOffPlaneSpacings`
+/// from its plane, beyond the feature's bound (such a sample does not vouch
+/// for the vertices it sources; Feature::offPlaneQ90), or, for an edge
+/// vertex, beyond the long-move bound when the move is longer than
+/// `longMoveSpacings`: a flank's misfit grows along the extrapolation to the
+/// line two planes meet on. A corner's point is pinned by three planes, and
+/// an acute corner's move is long by its shape; left alone among sharpened
+/// edges it would be a notch. Both in sample spacings. Pure.
+inline bool vertexEvidenceIsWeak(double moveSpacings, double sourceOffPlaneSpacings, bool corner,
+                                 const SharpenOptions &opt) {
+  if (sourceOffPlaneSpacings > opt.maxFeatureOffPlaneSpacings) return true;
+  return !corner && opt.longMoveSpacings > 0 && moveSpacings > opt.longMoveSpacings &&
+         sourceOffPlaneSpacings > opt.maxLongMoveOffPlaneSpacings;
 }
 
 /// Of the inserted vertices of the features placement moved at all, the
@@ -465,16 +481,18 @@ class EvidenceGuard {
     std::vector<char> weak;
   };
 
-  /// Whether inserted vertex `k` (split plan order) has a source farther
-  /// from its plane than the off-plane bound. Its feature, when not weak,
-  /// was kept on the strength of its other samples (Feature::offPlaneQ90):
-  /// such a sample does not vouch for the vertices it sources.
-  bool hasFarSource(std::size_t k) const {
+  /// Whether inserted vertex `k` (split plan order), in a feature not weak,
+  /// goes back to rest on its own evidence (vertexEvidenceIsWeak): its
+  /// move's length and its farthest source's distance from its plane.
+  bool vertexIsWeak(std::size_t k) const {
     const InsertedVertexSource &source = moves_.plan().inserted[k];
+    double offPlane = 0;
     for (int i = 0; i < source.originalCount; ++i)
-      if (offPlaneSpacings(support_, moves_, source.original[i]) > opt_.maxFeatureOffPlaneSpacings)
-        return true;
-    return false;
+      offPlane = std::max(offPlane, offPlaneSpacings(support_, moves_, source.original[i]));
+    const std::size_t v = moves_.firstInserted() + k;
+    const double spacing = support_.sampleSpacing > 0 ? support_.sampleSpacing : 1.0;
+    const double move = (positionOf(&m_.vert[v]) - source.rest).Norm() / spacing;
+    return vertexEvidenceIsWeak(move, offPlane, source.originalCount != 2, opt_);
   }
   Judgement judge() {
     Judgement out;
@@ -499,8 +517,8 @@ class EvidenceGuard {
   }
 
   /// Sends back to rest every move of the features whose evidence is weak
-  /// (weakFeatures), and of the other features' vertices with a far source
-  /// (hasFarSource): their inserted vertices (as Placement::WeakEvidence)
+  /// (weakFeatures), and of the other features' vertices whose own evidence
+  /// is weak (vertexIsWeak): their inserted vertices (as Placement::WeakEvidence)
   /// and the zone vertices projected beside them. Runs before the cleanup: a
   /// feature left as it was is never touched by the cleanup's collapses and
   /// flips, so its faces are the input's exactly.
@@ -511,7 +529,7 @@ class EvidenceGuard {
     const std::vector<char> &weak = judged.weak;
     const std::size_t first = moves_.firstInserted();
     for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
-      if (m_.vert[first + k].IsD() || !(weak[featureOf_[k]] || hasFarSource(k))) continue;
+      if (m_.vert[first + k].IsD() || !(weak[featureOf_[k]] || vertexIsWeak(k))) continue;
       if (moves_.isMoved(first + k)) {
         moves_.sendBack(first + k, Placement::WeakEvidence);
         ++stats.reverted;
