@@ -38,10 +38,12 @@ for n in $sizes; do
 done
 joined="$(IFS=,; echo "${list[*]}")"
 
-# --- Google Benchmark: medians of $reps repetitions.
+# --- Google Benchmark: medians of $reps repetitions, interleaved at random so that a
+# change in the shared machine's load falls on every benchmark alike.
 echo "== Google Benchmark (${reps} repetitions)"
 "$build/bench/edge-sharpener-bench" --meshes="$joined" --benchmark_repetitions="$reps" \
-  --benchmark_report_aggregates_only=true --benchmark_out="$out/bench.json" \
+  --benchmark_report_aggregates_only=true --benchmark_enable_random_interleaving=true \
+  --benchmark_out="$out/bench.json" \
   --benchmark_out_format=json --benchmark_counters_tabular=true
 
 # --- CLI end to end: wall time (best of 2) and peak RSS, beside read+write only.
