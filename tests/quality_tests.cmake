@@ -23,14 +23,18 @@
 #   quality.on_plane            lblock_tilted and plate_holes by MeshLab's Isotropic Explicit
 #                               Remeshing: exactly sampled features with a few far samples are
 #                               sharpened, none made worse.
+#   quality.long_move           octa-flower17k (../shared) by MeshLab's Screened Poisson: a
+#                               petal tip's long moves from samples off their planes stay at
+#                               rest, the input not made worse (skipped without ../shared).
 #   quality.smooth_planes       cross_prism by MeshLab's Screened Poisson: the default method
 #                               sharpens a smooth part made of planes; rocker-arm (../shared, a
 #                               freeform part) by OpenVDB at 1% not made worse (checked when
 #                               ../shared and OpenVDB are there).
 # The full benchmark (docs/results.md) is scripts/bench-quality.sh, not a test.
-# All exit 77 (skipped) when MeshLab or python3 is not installed, fandisk_targets also without
-# ../shared. Run: ctest -L quality
+# All exit 77 (skipped) when MeshLab or python3 is not installed, fandisk_targets and
+# long_move also without ../shared. Run: ctest -L quality
 edge_sharpener_meshlab_script_tests(quality
   fast_subset 900  hausdorff_crosscheck 600  hausdorff_meshlab_mode 600  families_subset 900
   fandisk_targets 900  cad_as_is 600  thin_wall 600  smooth_planes 600  on_plane 600
+  long_move 600
   ENVIRONMENT "ES_BUILD_DIR=${CMAKE_BINARY_DIR}")
