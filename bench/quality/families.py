@@ -502,6 +502,18 @@ def default_section(results):
               "sharpener gives back; each family's gain is also given without those inputs.",
               "",
               *default_misses(hc, mult)]
+    L += ["**Sharpened, but the max error moved little at saddle corners** (diagnosed on "
+          "cross_prism at UMR 1%, tuning half: max 0.454% -> 0.308%, RMS ×11.5). Where a concave "
+          "edge meets the top, the top has a reflex corner, and an input face of the top joins "
+          "a sample of one arm to a sample of the other across the notch (from (0.290, 0.317) "
+          "to (0.317, 0.290) at z = 0.2994, passing (0.3036, 0.3036), outside both walls). "
+          "Raised to their edge, the walls pierce that face: the intersection guard finds 64 "
+          "crossing face pairs and sends back 16 new vertices, the corner vertex and one edge "
+          "vertex at each of the 8 saddle corners, where the max error stays. The same guard "
+          "sends back 23 at lblock_tilted UMR 1% and 35 at cross_prism and lblock_tilted VDB 1%. "
+          "What would cure it is a new vertex on that edge of the top, placed at the corner "
+          "point; neither the paper's split plan nor the auto method's splits an edge between "
+          "two samples of one region yet.", ""]
     return L
 
 
