@@ -301,17 +301,6 @@ inline const std::vector<OptionSpec> &optionTable() {
        "part: the new vertices they source stay at rest; 0: every far vertex counts).",
        T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
        ES_REAL(onPlaneSpacings)},
-      {"long_move_spacings", "--long-move", "", "Long move",
-       "Auto method: a new vertex on an edge (not a corner) moved farther than this from its "
-       "chamfer stays at rest when one of its vertices lies farther than --long-move-off-plane "
-       "from its plane: a long extrapolation magnifies a curved flank's misfit (0: off).",
-       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(longMoveSpacings)},
-      {"max_long_move_off_plane_spacings", "--long-move-off-plane", "",
-       "Long move off-plane distance",
-       "Auto method: the off-plane distance a long move's vertices may have (see --long-move).",
-       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxLongMoveOffPlaneSpacings)},
       {"min_feature_vertices", "--min-feature-vertices", "", "Minimum feature size",
        "Auto method: a feature with fewer new vertices than this stays as it was.",
        T::Integer, G::EvidenceGuard, "vertices", 0, 1000, false, kNotInMeshLab, {}, {},
@@ -329,6 +318,17 @@ inline const std::vector<OptionSpec> &optionTable() {
        "(0: off).",
        T::Real, G::EvidenceGuard, "deg", 0, 90, false, kNotInMeshLab, {}, {},
        ES_ANGLE(maxFeatureLineChamferAngleRad)},
+      {"long_move_spacings", "--long-move", "", "Long move",
+       "Auto method: a new vertex on an edge (not a corner) moved farther than this from its "
+       "chamfer stays at rest when one of its vertices lies farther than --long-move-off-plane "
+       "from its plane: a long extrapolation magnifies a curved flank's misfit (0: off).",
+       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(longMoveSpacings)},
+      {"max_long_move_off_plane_spacings", "--long-move-off-plane", "",
+       "Long move off-plane distance",
+       "Auto method: the off-plane distance a long move's vertices may have (see --long-move).",
+       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(maxLongMoveOffPlaneSpacings)},
   };
   return table;
 }

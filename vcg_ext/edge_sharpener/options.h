@@ -168,13 +168,6 @@ struct SharpenOptions {
   /// meets another part, not on a blend along it. The new vertices those
   /// far samples source stay at rest. 0: every far sample counts.
   double onPlaneSpacings = 0.05;
-  /// In a feature kept, a new edge vertex moved farther than this many sample
-  /// spacings from its chamfer stays at rest when one of its source vertices
-  /// lies more than `maxLongMoveOffPlaneSpacings` off its plane: a long
-  /// extrapolation magnifies the misfit such a sample shows (a curved petal
-  /// whose planes meet beyond the tip a reconstruction rounded). 0: off.
-  double longMoveSpacings = 2.0;
-  double maxLongMoveOffPlaneSpacings = 0.3;
   /// ...or when it has fewer than this many inserted vertices...
   int minFeatureVertices = 3;
   /// ...or, for an edge, when its flanks' planes meet at less than this
@@ -188,6 +181,13 @@ struct SharpenOptions {
   /// its chamfer, while planes that meet across it (the two walls beside a
   /// thin wall's cap) make no edge there. 0 disables.
   double maxFeatureLineChamferAngleRad = 45.0 * M_PI / 180.0;
+  /// In a feature kept, a new edge vertex moved farther than this many sample
+  /// spacings from its chamfer stays at rest when one of its source vertices
+  /// lies more than `maxLongMoveOffPlaneSpacings` off its plane: a long
+  /// extrapolation magnifies the misfit such a sample shows (a curved petal
+  /// whose planes meet beyond the tip a reconstruction rounded). 0: off.
+  double longMoveSpacings = 2.0;
+  double maxLongMoveOffPlaneSpacings = 0.3;
   /// Nothing is sharpened either when the moves mostly slide along the
   /// input's surface: the median distance of their targets from the input
   /// faces around them is below this fraction of their length (a model
