@@ -41,6 +41,14 @@ NOTES = """What it changed and found (diagnosed by hand):
   reconstruction; the new vertices land up to 0.011 units beyond the reference's edge (x =
   0.81 against 0.80), the overshoot of octa-flower17k's tips along an edge: a small error in
   the fitted planes moves the line they meet on by that error over the sine of half the angle.
+  The per-vertex study (`evidence_study.py --vertices`) finds the edge cut into nine kept
+  features (flanks meeting at 26-31 degrees in the fit, median moves 1.7-2.4 sample
+  spacings), each of which raises the error while the 88-degree edges lower it; the worst
+  vertices' samples lie only 0.06-0.15 spacings off their planes, below the long-move rule's
+  0.3. The same kind of edge gains x4.11 by OpenVDB in the benchmark.
+- The long-move rule (an edge vertex moved more than two spacings from samples more than 0.3
+  spacings off their planes stays at rest) lowered octa-flower17k 0.461% -> 0.448% and the
+  wedge 0.547% -> 0.540% on the same inputs; both are still worse.
 - ADIS16480: designed chamfers, as abc6's. The housing's outer edges are bevelled at 45
   degrees, 0.2 mm wide (x from 21.423 to 21.623 mm along the edge at y = -6.053), about one
   cell of this reconstruction (depth 8 over 50 mm). Its four longest edge features (460-500
