@@ -65,6 +65,9 @@ int main(int argc, char **argv) {
     withoutOffPlane.maxFeatureOffPlaneSpacings = 1e30;
     const std::vector<char> weakOtherwise = es::weakFeatures(
         plan, features, featureOf, judged.stats.medianLift, measures, withoutOffPlane);
+    // Each feature's source vertices' distances to their own plane, as the guard measured them.
+    const std::vector<std::vector<double>> offPlane =
+        es::sourceOffPlanes(m, moves, zones.support, featureOf, features.size());
     const double refused = judged.stats.refusedFraction;
     // Median distance and lift of each feature's moves (distance in sample spacings).
     std::vector<std::vector<double>> moveLengths(features.size()), featureLifts(features.size());
@@ -104,14 +107,13 @@ int main(int argc, char **argv) {
         const std::size_t c = featureOf[k];
         if (m.vert[v].IsD() || !moves.isMoved(v) || weak[c]) continue;
         const es::Vec3 target = es::positionOf(&m.vert[v]), rest = plan.inserted[k].rest;
-        const double length = (target - rest).Norm() / spacing;
-        double sourceOffPlane = 0, reach = 0;
-        for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
-          const std::size_t s = plan.inserted[k].original[i];
-          sourceOffPlane = std::max(sourceOffPlane, es::offPlaneSpacings(zones.support, moves, s));
-          reach = std::max(reach, (target - moves.exactRest(s)).Norm() / spacing);
-        }
-        if (sourceOffPlane > opt.maxFeatureOffPlaneSpacings) continue;  // a far sample's
+        const auto own = guard.vertexEvidence(k);
+        if (own.sourceOffPlaneSpacings > opt.maxFeatureOffPlaneSpacings)
+          continue;  // a far sample's
+        double reach = 0;
+        for (int i = 0; i < plan.inserted[k].originalCount; ++i)
+          reach = std::max(
+              reach, (target - moves.exactRest(plan.inserted[k].original[i])).Norm() / spacing);
         const double d0 = distance(rest) / spacing, d1 = distance(target) / spacing;
         std::printf(
             "{\"case\": \"%s\", \"feature\": %zu, \"corner\": %d, \"feature_vertices\": "
@@ -120,8 +122,8 @@ int main(int argc, char **argv) {
             "[%.6g, %.6g, "
             "%.6g]}\n",
             name.c_str(), c, int(features[c].corner), features[c].vertices,
-            es::medianLift(featureLifts[c]), length, lifts[k], sourceOffPlane, reach,
-            int(guard.vertexIsWeak(k)), d0, d1, target[0], target[1], target[2]);
+            es::medianLift(featureLifts[c]), own.moveSpacings, lifts[k], own.sourceOffPlaneSpacings,
+            reach, int(guard.vertexIsWeak(k)), d0, d1, target[0], target[1], target[2]);
       }
       return 0;
     }
@@ -136,16 +138,6 @@ int main(int argc, char **argv) {
         account(featureOf[k], s);
       }
     }
-    // Each feature's source vertices' distances to their own plane, in sample spacings.
-    std::vector<std::vector<double>> offPlane(features.size());
-    std::vector<char> sourceSeen(plan.originalVertexCount, 0);
-    for (std::size_t k = 0; k < plan.inserted.size(); ++k)
-      for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
-        const std::size_t s = plan.inserted[k].original[i];
-        if (sourceSeen[s] || zones.support.plane(s).normal.SquaredNorm() == 0) continue;
-        sourceSeen[s] = 1;
-        offPlane[featureOf[k]].push_back(es::offPlaneSpacings(zones.support, moves, s));
-      }
     // Per moved edge vertex, how far its sources lie off their planes over how far they
     // lie from its target (0: samples on the flanks' planes; a bevel's or a blend's: large).
     std::vector<std::vector<double>> roundness(features.size());

@@ -170,6 +170,12 @@ inline double quantileOf(std::vector<double> &values, double q) {
 }
 }  // namespace detail
 
+/// The length the guard's distances are measured in: the sample spacing, or
+/// 1 where none was measured.
+inline double spacingUnit(const SupportPlanes &support) {
+  return support.sampleSpacing > 0 ? support.sampleSpacing : 1.0;
+}
+
 /// How far source vertex `s` lies from its plane at its rest position, in
 /// sample spacings; 0 where it has no plane.
 template <class MeshType>
@@ -177,8 +183,34 @@ double offPlaneSpacings(const SupportPlanes &support, const VertexMoves<MeshType
                         std::size_t s) {
   const Plane &pl = support.plane(s);
   if (pl.normal.SquaredNorm() == 0) return 0;
-  const double spacing = support.sampleSpacing > 0 ? support.sampleSpacing : 1.0;
-  return std::abs(pl.normal * (moves.exactRest(s) - pl.point)) / spacing;
+  return std::abs(pl.normal * (moves.exactRest(s) - pl.point)) / spacingUnit(support);
+}
+
+/// Per feature, how far each of its source vertices with a plane lies from
+/// it (offPlaneSpacings), each (feature, source) pair once: a source serves
+/// several of a feature's vertices. Sources of inserted vertices no longer in
+/// the mesh do not count.
+template <class MeshType>
+std::vector<std::vector<double>> sourceOffPlanes(const MeshType &m,
+                                                 const VertexMoves<MeshType> &moves,
+                                                 const SupportPlanes &support,
+                                                 const std::vector<std::uint32_t> &featureOf,
+                                                 std::size_t featureCount) {
+  const SplitPlan &plan = moves.plan();
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> sources;
+  for (std::size_t k = 0; k < featureOf.size(); ++k) {
+    if (m.vert[moves.firstInserted() + k].IsD()) continue;
+    for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
+      const std::size_t s = plan.inserted[k].original[i];
+      if (support.plane(s).normal.SquaredNorm() > 0)
+        sources.emplace_back(featureOf[k], std::uint32_t(s));
+    }
+  }
+  std::sort(sources.begin(), sources.end());
+  sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
+  std::vector<std::vector<double>> offPlane(featureCount);
+  for (const auto &[c, s] : sources) offPlane[c].push_back(offPlaneSpacings(support, moves, s));
+  return offPlane;
 }
 
 /// Counts, per feature, its inserted vertices still in the mesh and those
@@ -209,8 +241,6 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
   countFeatureMoves(m, moves, featureOf, features);
   const SplitPlan &plan = moves.plan();
   std::vector<std::vector<double>> angles(features.size()), lineAngles(features.size());
-  // Each (feature, source) pair once: a source serves several of a feature's vertices.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> sources;
   for (std::size_t k = 0; k < featureOf.size(); ++k) {
     if (m.vert[moves.firstInserted() + k].IsD()) continue;
     if (plan.inserted[k].originalCount == 2) {
@@ -223,16 +253,9 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
           lineAngles[featureOf[k]].push_back(lineAngleToSurface(a, b, chamfer));
       }
     }
-    for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
-      const std::size_t s = plan.inserted[k].original[i];
-      if (support.plane(s).normal.SquaredNorm() > 0)
-        sources.emplace_back(featureOf[k], std::uint32_t(s));
-    }
   }
-  std::sort(sources.begin(), sources.end());
-  sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
-  std::vector<std::vector<double>> offPlane(features.size());
-  for (const auto &[c, s] : sources) offPlane[c].push_back(offPlaneSpacings(support, moves, s));
+  std::vector<std::vector<double>> offPlane =
+      sourceOffPlanes(m, moves, support, featureOf, features.size());
   for (std::size_t c = 0; c < features.size(); ++c) {
     features[c].maxOffPlane =
         offPlane[c].empty() ? 0 : *std::max_element(offPlane[c].begin(), offPlane[c].end());
@@ -481,18 +504,31 @@ class EvidenceGuard {
     std::vector<char> weak;
   };
 
-  /// Whether inserted vertex `k` (split plan order), in a feature not weak,
-  /// goes back to rest on its own evidence (vertexEvidenceIsWeak): its
-  /// move's length and its farthest source's distance from its plane.
-  bool vertexIsWeak(std::size_t k) const {
+  /// One inserted vertex's own evidence, in sample spacings: how far it is
+  /// from rest, and how far its farthest source lies from its plane.
+  struct VertexEvidence {
+    double moveSpacings = 0;
+    double sourceOffPlaneSpacings = 0;
+    bool corner = false;
+  };
+  VertexEvidence vertexEvidence(std::size_t k) const {
     const InsertedVertexSource &source = moves_.plan().inserted[k];
-    double offPlane = 0;
+    VertexEvidence e;
     for (int i = 0; i < source.originalCount; ++i)
-      offPlane = std::max(offPlane, offPlaneSpacings(support_, moves_, source.original[i]));
+      e.sourceOffPlaneSpacings = std::max(e.sourceOffPlaneSpacings,
+                                          offPlaneSpacings(support_, moves_, source.original[i]));
     const std::size_t v = moves_.firstInserted() + k;
-    const double spacing = support_.sampleSpacing > 0 ? support_.sampleSpacing : 1.0;
-    const double move = (positionOf(&m_.vert[v]) - source.rest).Norm() / spacing;
-    return vertexEvidenceIsWeak(move, offPlane, source.originalCount != 2, opt_);
+    e.moveSpacings = (positionOf(&m_.vert[v]) - source.rest).Norm() / spacingUnit(support_);
+    e.corner = source.originalCount != 2;
+    return e;
+  }
+
+  /// Whether inserted vertex `k` (split plan order), in a feature not weak,
+  /// goes back to rest on its own evidence (vertexEvidence,
+  /// vertexEvidenceIsWeak).
+  bool vertexIsWeak(std::size_t k) const {
+    const VertexEvidence e = vertexEvidence(k);
+    return vertexEvidenceIsWeak(e.moveSpacings, e.sourceOffPlaneSpacings, e.corner, opt_);
   }
   Judgement judge() {
     Judgement out;
