@@ -20,9 +20,7 @@ def main():
     failures = []
     outcomes = checks.default_method_outcomes(checks.load_results()["cases"], failures,
                                               MULTIPLIER, width=24)
-    seen = {(c["model"], c["resolution"]) for c, _, _ in outcomes}
-    if seen != EXPECTED:
-        failures.append(f"measured {sorted(seen)}, expected {sorted(EXPECTED)}")
+    checks.require_measured(outcomes, ("model", "resolution"), EXPECTED, failures)
     checks.finish(failures, "long moves from samples off their planes: none made worse")
 
 

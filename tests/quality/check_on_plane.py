@@ -33,9 +33,7 @@ def main():
         if bound and before["rms"] < bound * after["rms"]:
             failures.append(f"{c['model']} {c['input']} {c['resolution']}: RMS "
                             f"x{before['rms'] / after['rms']:.2f} < x{bound}")
-    seen = {(c["model"], c["resolution"]) for c, _, _ in outcomes}
-    if seen != EXPECTED:
-        failures.append(f"measured {sorted(seen)}, expected {sorted(EXPECTED)}")
+    checks.require_measured(outcomes, ("model", "resolution"), EXPECTED, failures)
     checks.finish(failures, "on-plane features: sharpened, none made worse")
 
 

@@ -27,12 +27,10 @@ def main():
                 before["rms"] < MIN_POISSON_RMS_FACTOR * after["rms"]:
             failures.append(f"cross_prism poisson: RMS x{before['rms'] / after['rms']:.2f} < "
                             f"x{MIN_POISSON_RMS_FACTOR}")
-    seen = {(c["model"], c["input"]) for c, _, _ in outcomes}
     expected = {("cross_prism", "poisson")}
     if len(sys.argv) > 2:  # rocker-arm's results too
         expected.add(("rocker-arm", "vdb"))
-    if seen != expected:
-        failures.append(f"measured {sorted(seen)}, expected {sorted(expected)}")
+    checks.require_measured(outcomes, ("model", "input"), expected, failures)
     checks.finish(failures, "smooth planes: Poisson's cross_prism sharpened, nothing made worse")
 
 

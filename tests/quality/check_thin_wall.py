@@ -26,9 +26,7 @@ def main():
         if c["input"] == "csg" and before["rms"] < MIN_CSG_RMS_FACTOR * after["rms"]:
             failures.append(f"{c['model']} {c['input']} {c['resolution']}: RMS "
                             f"x{before['rms'] / after['rms']:.2f} < x{MIN_CSG_RMS_FACTOR}")
-    seen = {(c["input"], c["resolution"]) for c, _, _ in outcomes}
-    if seen != EXPECTED:
-        failures.append(f"measured {sorted(seen)}, expected {sorted(EXPECTED)}")
+    checks.require_measured(outcomes, ("input", "resolution"), EXPECTED, failures)
     checks.finish(failures, "thin wall: the default method made neither input worse")
 
 

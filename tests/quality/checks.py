@@ -62,6 +62,14 @@ def default_method_outcomes(cases, failures, multiplier=2.0, width=28):
     return out
 
 
+def require_measured(outcomes, fields, expected, failures):
+    """Appends a failure unless the cases of `outcomes` (default_method_outcomes), each keyed by
+    the tuple of its `fields`, are exactly the set `expected`: no input may go missing."""
+    seen = {tuple(c[f] for f in fields) for c, _, _ in outcomes}
+    if seen != set(expected):
+        failures.append(f"measured {sorted(seen)}, expected {sorted(expected)}")
+
+
 # --------------------------------------------------------------------------- MeshLab cross-checks
 def meshlab_setup(shapes):
     """(run.Tools, meshlab.Server, work directory) with the generated shapes `shapes` (exact
