@@ -30,9 +30,8 @@ def main():
             ("plate_holes", "1%"): MIN_PLATE_RMS_FACTOR}
     for c, before, after in outcomes:
         bound = need.get((c["model"], c["resolution"]))
-        if bound and before["rms"] < bound * after["rms"]:
-            failures.append(f"{c['model']} {c['input']} {c['resolution']}: RMS "
-                            f"x{before['rms'] / after['rms']:.2f} < x{bound}")
+        if bound:
+            checks.require_rms_factor(c, before, after, bound, failures)
     checks.require_measured(outcomes, ("model", "resolution"), EXPECTED, failures)
     checks.finish(failures, "on-plane features: sharpened, none made worse")
 

@@ -23,10 +23,8 @@ def main():
     failures = []
     outcomes = checks.default_method_outcomes(checks.load_results()["cases"], failures, MULTIPLIER)
     for c, before, after in outcomes:
-        if (c["model"], c["input"]) == ("cross_prism", "poisson") and \
-                before["rms"] < MIN_POISSON_RMS_FACTOR * after["rms"]:
-            failures.append(f"cross_prism poisson: RMS x{before['rms'] / after['rms']:.2f} < "
-                            f"x{MIN_POISSON_RMS_FACTOR}")
+        if (c["model"], c["input"]) == ("cross_prism", "poisson"):
+            checks.require_rms_factor(c, before, after, MIN_POISSON_RMS_FACTOR, failures)
     expected = {("cross_prism", "poisson")}
     if len(sys.argv) > 2:  # rocker-arm's results too
         expected.add(("rocker-arm", "vdb"))

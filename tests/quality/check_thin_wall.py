@@ -23,9 +23,8 @@ def main():
     outcomes = checks.default_method_outcomes(checks.load_results()["cases"], failures,
                                               MULTIPLIER, width=16)
     for c, before, after in outcomes:
-        if c["input"] == "csg" and before["rms"] < MIN_CSG_RMS_FACTOR * after["rms"]:
-            failures.append(f"{c['model']} {c['input']} {c['resolution']}: RMS "
-                            f"x{before['rms'] / after['rms']:.2f} < x{MIN_CSG_RMS_FACTOR}")
+        if c["input"] == "csg":
+            checks.require_rms_factor(c, before, after, MIN_CSG_RMS_FACTOR, failures)
     checks.require_measured(outcomes, ("input", "resolution"), EXPECTED, failures)
     checks.finish(failures, "thin wall: the default method made neither input worse")
 

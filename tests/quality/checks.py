@@ -62,6 +62,14 @@ def default_method_outcomes(cases, failures, multiplier=2.0, width=28):
     return out
 
 
+def require_rms_factor(case, before, after, bound, failures):
+    """Appends a failure when the default method lowered the case's RMS error by less than
+    the factor `bound`."""
+    if before["rms"] < bound * after["rms"]:
+        failures.append(f"{case['model']} {case['input']} {case['resolution']}: RMS "
+                        f"x{before['rms'] / after['rms']:.2f} < x{bound}")
+
+
 def require_measured(outcomes, fields, expected, failures):
     """Appends a failure unless the cases of `outcomes` (default_method_outcomes), each keyed by
     the tuple of its `fields`, are exactly the set `expected`: no input may go missing."""
