@@ -8,10 +8,17 @@
 // With --vertices it prints one line per moved inserted vertex of a feature
 // the guard keeps instead: its move and lift, and its own change of distance
 // to the reference (a per-vertex bound's study).
-//   evidence-study INPUT REFERENCE [CASE-NAME] [--vertices]
+// With --sources it prints one line per (feature, source vertex) pair
+// instead: where the source lies, how far from its own plane and from the
+// nearest plane of the vertex's other sources (both in sample spacings), and
+// the feature's verdicts: a sampler's cut between two flanks lies as far from
+// either plane, a blend's sample absorbed by one flank's region nearer its own.
+//   evidence-study INPUT REFERENCE [CASE-NAME] [--vertices | --sources]
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <set>
 #include <string>
 
 #include "edge_sharpener/edge_sharpener.h"
@@ -21,13 +28,53 @@
 
 namespace es = edge_sharpener;
 
+/// --sources: one JSON line per (feature, source vertex) pair, each pair once.
+template <class MeshType>
+void printSources(const std::string &name, const MeshType &m,
+                  const es::VertexMoves<MeshType> &moves, const es::SupportPlanes &support,
+                  const std::vector<std::uint32_t> &featureOf,
+                  const std::vector<es::Feature> &features, const std::vector<char> &weak,
+                  const std::vector<char> &weakOtherwise) {
+  const es::SplitPlan &plan = moves.plan();
+  const double spacing = es::spacingUnit(support);
+  const auto offPlane = [&](const es::Plane &pl, std::size_t s) {
+    return std::abs(pl.normal * (moves.exactRest(s) - pl.point)) / spacing;
+  };
+  std::set<std::pair<std::uint32_t, std::size_t>> seen;
+  for (std::size_t k = 0; k < featureOf.size(); ++k) {
+    if (m.vert[moves.firstInserted() + k].IsD()) continue;
+    const es::InsertedVertexSource &source = plan.inserted[k];
+    for (int i = 0; i < source.originalCount; ++i) {
+      const std::size_t s = source.original[i];
+      const es::Plane &own = support.plane(s);
+      if (own.normal.SquaredNorm() == 0 || !seen.insert({featureOf[k], s}).second) continue;
+      double other = -1;  // the nearest other source's plane; -1: none
+      for (int j = 0; j < source.originalCount; ++j) {
+        const es::Plane &pl = support.plane(source.original[j]);
+        if (j == i || pl.normal.SquaredNorm() == 0) continue;
+        other = other < 0 ? offPlane(pl, s) : std::min(other, offPlane(pl, s));
+      }
+      const es::Vec3 p = moves.exactRest(s);
+      const std::uint32_t c = featureOf[k];
+      std::printf(
+          "{\"case\": \"%s\", \"feature\": %u, \"corner\": %d, \"weak\": %d, "
+          "\"weak_otherwise\": %d, \"source\": %zu, \"region\": %d, \"off_plane\": %.4f, "
+          "\"off_other_plane\": %.4f, \"x\": [%.6g, %.6g, %.6g]}\n",
+          name.c_str(), c, int(features[c].corner), int(weak[c]), int(weakOtherwise[c]), s,
+          s < support.region.size() ? support.region[s] : -1, offPlane(own, s), other, p[0], p[1],
+          p[2]);
+    }
+  }
+}
+
 int main(int argc, char **argv) {
   if (argc < 3) {
-    std::cerr << "usage: evidence-study INPUT REFERENCE [CASE-NAME]\n";
+    std::cerr << "usage: evidence-study INPUT REFERENCE [CASE-NAME] [--vertices | --sources]\n";
     return 2;
   }
   const std::string name = argc > 3 ? argv[3] : argv[1];
-  const bool perVertex = argc > 4 && std::string(argv[4]) == "--vertices";
+  const std::string mode = argc > 4 ? argv[4] : "";
+  const bool perVertex = mode == "--vertices", perSource = mode == "--sources";
   try {
     es::Mesh m, reference;
     es::io::loadMesh(argv[1], m);
@@ -68,6 +115,10 @@ int main(int argc, char **argv) {
     // Each feature's source vertices' distances to their own plane, as the guard measured them.
     const std::vector<std::vector<double>> offPlane =
         es::sourceOffPlanes(m, moves, zones.support, featureOf, features.size());
+    if (perSource) {
+      printSources(name, m, moves, zones.support, featureOf, features, weak, weakOtherwise);
+      return 0;
+    }
     const double refused = judged.stats.refusedFraction;
     // Median distance and lift of each feature's moves (distance in sample spacings).
     std::vector<std::vector<double>> moveLengths(features.size()), featureLifts(features.size());

@@ -5,7 +5,9 @@ guard's rule on the tuning half and checking it on the validation half.
 
   bench/study/evidence_study.py --build BUILD --half tuning|validation --out FILE.jsonl
 
-With --vertices, one line per moved vertex of a kept feature instead.
+With --vertices, one line per moved vertex of a kept feature instead; with --sources, one
+line per (feature, source vertex) pair: how far the source lies from its own plane and from
+the other sources' planes (where a feature's far samples come from).
 """
 import argparse
 import concurrent.futures
@@ -37,8 +39,11 @@ def main():
     ap.add_argument("--half", choices=("tuning", "validation"), required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--vertices", action="store_true",
-                    help="one line per moved vertex of a kept feature")
+    detail = ap.add_mutually_exclusive_group()
+    detail.add_argument("--vertices", action="store_true",
+                        help="one line per moved vertex of a kept feature")
+    detail.add_argument("--sources", action="store_true",
+                        help="one line per (feature, source vertex) pair")
     args = ap.parse_args()
     cache = os.path.join(args.build, "quality-cache")
     split = json.load(open(os.path.join(SOURCE, "bench", "quality", "split.json")))
@@ -59,7 +64,7 @@ def main():
                 jobs.append((p, refs[name], key))
 
     def run(job):
-        extra = ["--vertices"] if args.vertices else []
+        extra = ["--vertices"] if args.vertices else ["--sources"] if args.sources else []
         p = subprocess.run([tool, *job, *extra], capture_output=True, text=True)
         return p.stdout
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool, open(args.out, "w") as out:
