@@ -513,7 +513,32 @@ def default_section(results):
           "sends back 23 at lblock_tilted UMR 1% and 35 at cross_prism and lblock_tilted VDB 1%. "
           "What would cure it is a new vertex on that edge of the top, placed at the corner "
           "point; neither the paper's split plan nor the auto method's splits an edge between "
-          "two samples of one region yet.", ""]
+          "two samples of one region yet.", "",
+          "**Left rounded where OpenVDB cuts a concave edge in two** (diagnosed on 7_8ths_cube "
+          "at OpenVDB 0.5-2%, tuning half, with `evidence-study --sources`; max 1.155% at 1%, "
+          "left as it was). At the notch's concave edges the voxel remesher's chamfer has a "
+          "middle row of vertices, half a cell off both planes (0.5 spacings off each); "
+          "segmentation gives that row to one flank's region, and the row's end at the concave "
+          "corner lies 0.67 spacings off all three planes. That one far sample makes two of "
+          "the three concave edges and the corner weak (the off-plane bound is 0.6 spacings), "
+          "though every vertex they would move lands on the reference (each move brings its "
+          "vertex closer). A sample as far from the other flank's plane as from its own is the "
+          "sampler's cut, not a blend; but across the tuning half, features with such samples "
+          "also include harmful ones (a designed bevel at UMR 0.5%, ADIS16480 at OpenVDB "
+          "0.5%), so no rule was made of it. The cure would be in segmentation: a chamfer row "
+          "a region absorbed, given back to the zone.", "",
+          "**Corners beside blends stay at rest** (tried and rejected, this session). An edge "
+          "feature whose placement refused more than 40% of its vertices (a blend, by "
+          "placement's own tests) makes the corners at its ends weak with it. Letting only "
+          "the edges weak for another reason (off-plane samples, a shallow angle, too short, "
+          "crossings) take their corners improved six inputs of the tuning half and harmed "
+          "none (cylinder_block Screened Poisson max 0.846% -> 0.797%, lblock_tilted own MC "
+          "0.413% -> 0.363%, octa-flower17k OpenVDB 0.5% 0.677% -> 0.554%); on the validation "
+          "half, measured once, pyramid Screened Poisson 1.439% -> 1.320% but "
+          "finished_hexprism own MC 1% 0.501% -> 0.550% (its designed fillets' corners; still "
+          "better than the input's 0.696%), and own MC's mean ×5.71 -> ×5.61. A corner "
+          "placed on three planes beside a designed fillet is the harm the guard exists to "
+          "avoid, so the rule stays as it was.", ""]
     return L
 
 
