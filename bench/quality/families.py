@@ -527,7 +527,7 @@ def default_section(results):
           "also include harmful ones (a designed bevel at UMR 0.5%, ADIS16480 at OpenVDB "
           "0.5%), so no rule was made of it. The cure would be in segmentation: a chamfer row "
           "a region absorbed, given back to the zone.", "",
-          "**Corners beside blends stay at rest** (tried and rejected, this session). An edge "
+          "**Corners beside blends stay at rest** (tried and rejected on 2026-11-26). An edge "
           "feature whose placement refused more than 40% of its vertices (a blend, by "
           "placement's own tests) makes the corners at its ends weak with it. Letting only "
           "the edges weak for another reason (off-plane samples, a shallow angle, too short, "
