@@ -72,6 +72,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
         {"reverted", r.cleanup.reverted},
         {"remaining", r.cleanup.remaining},
         {"inherited", r.cleanup.inherited}}},
+      {"planar_folds", {{"folds", r.planarFolds.folds}, {"patches", r.planarFolds.patches}}},
       {"self_intersections",
        {{"intersecting_pairs", r.intersections.intersectingPairs},
         {"reverted", r.intersections.reverted},

@@ -68,6 +68,13 @@ struct CleanupStats {
   std::size_t inherited = 0;        ///< degenerate children of input slivers (at rest too)
 };
 
+/// Stage 6a, auto method: flat patches folded over themselves, tiled again
+/// (guards/planar_folds.h).
+struct PlanarFoldStats {
+  std::size_t folds = 0;    ///< faces with a moved vertex folded over a neighbour on one plane
+  std::size_t patches = 0;  ///< flat patches around them tiled again without the fold
+};
+
 /// Stage 6b: moved vertices sent back to rest because a face of theirs
 /// intersected another face (intersection_guard.h).
 struct IntersectionStats {
@@ -122,6 +129,7 @@ struct SharpenReport {
   SubdivisionStats subdivision;
   PlacementStats placement;
   CleanupStats cleanup;
+  PlanarFoldStats planarFolds;  ///< auto method only
   IntersectionStats intersections;
   bool evidenceGuard = false;  ///< the auto method's evidence guard ran
   EvidenceStats evidence;
@@ -179,6 +187,9 @@ inline void formatGuards(std::ostream &s, const SharpenReport &r) {
     << r.cleanup.collapses << " collapses, " << r.cleanup.flips << " flips, " << r.cleanup.reverted
     << " vertices reverted, " << r.cleanup.remaining << " remaining, " << r.cleanup.inherited
     << " inherited from input slivers\n";
+  if (r.evidenceGuard)
+    s << "planar folds: " << r.planarFolds.folds << " folded faces found, " << r.planarFolds.patches
+      << " flat patches tiled again\n";
   s << "self-intersections: " << r.intersections.intersectingPairs
     << " intersecting face pairs found, " << r.intersections.reverted
     << " inserted vertices reverted";

@@ -14,6 +14,7 @@
 #include "../filters.h"
 #include "../guards/feature_evidence.h"
 #include "../guards/intersection_guard.h"
+#include "../guards/planar_folds.h"
 #include "../guards/vertex_moves.h"
 #include "../option_table.h"
 #include "../placement.h"
@@ -163,6 +164,10 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   if (input) beforeGuards.emplace(m, labels);
   report.cleanup = removeDegenerateTriangles(m, moves, opt.degenerateAngleRad,
                                              /*onlyWhereMoved=*/input.has_value());
+  if (input)
+    report.planarFolds = unfoldPlanarPatches(
+        m, [&](std::size_t v) { return !moves.isAtRest(v); },
+        kFoldPlaneSpacings * spacingUnit(zones.support), opt.degenerateAngleRad);
   report.intersections =
       revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
   if (evidence && evidence->leaveMeshIfGuardsRefused(*beforeGuards, report.evidence)) {

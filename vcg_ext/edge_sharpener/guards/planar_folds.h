@@ -1,0 +1,264 @@
+// Auto method, after the cleanup: a flat patch folded over itself is tiled
+// again. At a saddle corner (a concave edge meeting convex ones) an input face
+// of the flat side can join a sample of one arm to a sample of the other
+// across the notch; once the corner and edge vertices reach the sharp lines,
+// that face juts past the corner and a child of the chamfer beside it folds
+// back over it, and the raised walls pierce both (the intersection guard
+// would send the corner back). All of them lie on one plane, so the same
+// outline tiled again without the fold is the same flat surface, now ending
+// at the corner.
+#pragma once
+
+#include <vcg/complex/complex.h>
+#include <vcg/simplex/face/pos.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "../report.h"
+#include "../util/attributes.h"
+#include "../util/geometry.h"
+#include "../util/polygon_triangulation.h"
+
+namespace edge_sharpener {
+
+/// How far (sample spacings) a vertex may lie off a flat patch's plane and
+/// still count as on it: placement puts its vertices on the planes, and a
+/// remesher's samples of a flat face lie far closer than this to it.
+inline constexpr double kFoldPlaneSpacings = 0.1;
+
+namespace detail {
+
+/// Faces around vertex `z` of face `f` (closed 2-manifold).
+template <class FaceType>
+void facesAround(FaceType *f, int z, std::vector<FaceType *> &out) {
+  vcg::face::Pos<FaceType> start(f, z, f->V(z)), p = start;
+  int guard = 0;
+  do {
+    out.push_back(p.F());
+    p.FlipE();
+    p.FlipF();
+  } while (p != start && ++guard < 256);
+}
+
+template <class FaceType>
+Vec3 faceNormal(const FaceType &f) {
+  return (positionOf(f.cV(1)) - positionOf(f.cV(0))) ^ (positionOf(f.cV(2)) - positionOf(f.cV(0)));
+}
+
+/// Tiles `patch` (sorted) again on the plane (origin, unit normal), in
+/// place, FF adjacency kept, when its outline is one loop holding all its
+/// vertices, simple and counter-clockwise seen from the normal, and tiles
+/// with angles of at least `minAngleRad` whose new inner edges are not edges
+/// outside already. \return whether it did.
+template <class MeshType>
+bool retileFlatPatch(const std::vector<typename MeshType::FaceType *> &patch, const Vec3 &origin,
+                     const Vec3 &normal, double minAngleRad) {
+  using FaceType = typename MeshType::FaceType;
+  using VertexType = typename MeshType::VertexType;
+  const auto inPatch = [&](const FaceType *f) {
+    return std::binary_search(patch.begin(), patch.end(), f);
+  };
+  struct HalfEdge {
+    VertexType *to;
+    FaceType *outside;
+    int outsideEdge;
+  };
+  std::map<VertexType *, HalfEdge> next;  // the outline: half-edges whose other face is outside
+  std::vector<VertexType *> vertices;
+  for (FaceType *f : patch)
+    for (int j = 0; j < 3; ++j) {
+      vertices.push_back(f->V(j));
+      if (inPatch(f->FFp(j))) continue;
+      if (!next.emplace(f->V(j), HalfEdge{f->V((j + 1) % 3), f->FFp(j), f->FFi(j)}).second)
+        return false;  // the outline touches itself
+    }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  if (next.empty()) return false;
+  std::vector<VertexType *> loop{next.begin()->first};
+  while (loop.size() <= next.size()) {
+    const auto it = next.find(loop.back());
+    if (it == next.end()) return false;
+    if (it->second.to == loop.front()) break;
+    loop.push_back(it->second.to);
+  }
+  // A disk whose vertices are all on its outline has n - 2 faces.
+  if (loop.size() != next.size() || loop.size() != vertices.size() ||
+      patch.size() + 2 != loop.size())
+    return false;
+  Vec3 u = positionOf(loop[1]) - positionOf(loop[0]);
+  u = u - normal * (u * normal);
+  if (!(u.Norm() > 0)) return false;
+  u /= u.Norm();
+  const Vec3 v = normal ^ u;
+  std::vector<Vec2> outline;
+  for (VertexType *x : loop) {
+    const Vec3 d = positionOf(x) - origin;
+    outline.emplace_back(d * u, d * v);
+  }
+  const std::vector<std::array<int, 3>> tiles = triangulateSimplePolygon(outline, minAngleRad);
+  if (tiles.size() != patch.size()) return false;
+  const auto outlineEdge = [&](VertexType *a, VertexType *b) {
+    const auto it = next.find(a);
+    return it != next.end() && it->second.to == b;
+  };
+  for (const auto &t : tiles)
+    for (int j = 0; j < 3; ++j) {
+      VertexType *a = loop[t[j]], *b = loop[t[(j + 1) % 3]];
+      if (outlineEdge(a, b)) continue;
+      std::vector<FaceType *> star;  // an inner edge must not be an edge outside already
+      for (FaceType *f : patch)
+        for (int z = 0; z < 3; ++z)
+          if (f->V(z) == a) facesAround(f, z, star);
+      for (FaceType *f : star)
+        if (!inPatch(f))
+          for (int k = 0; k < 3; ++k)
+            if (f->V(k) == b) return false;
+    }
+  for (std::size_t i = 0; i < tiles.size(); ++i)
+    for (int j = 0; j < 3; ++j) patch[i]->V(j) = loop[tiles[i][j]];
+  std::map<std::pair<VertexType *, VertexType *>, std::pair<FaceType *, int>> inner;
+  for (FaceType *f : patch)
+    for (int j = 0; j < 3; ++j) {
+      VertexType *a = f->V(j), *b = f->V((j + 1) % 3);
+      if (outlineEdge(a, b)) {
+        const HalfEdge &h = next.at(a);
+        f->FFp(j) = h.outside, f->FFi(j) = h.outsideEdge;
+        h.outside->FFp(h.outsideEdge) = f, h.outside->FFi(h.outsideEdge) = j;
+        continue;
+      }
+      const auto [it, first] =
+          inner.emplace(std::make_pair(std::min(a, b), std::max(a, b)), std::make_pair(f, j));
+      if (first) continue;
+      FaceType *g = it->second.first;
+      const int k = it->second.second;
+      f->FFp(j) = g, f->FFi(j) = k;
+      g->FFp(k) = f, g->FFi(k) = j;
+    }
+  return true;
+}
+
+/// Tiles the flat patch around a fold again: from face `seed` and its
+/// neighbour across edge `j`, it grows by faces on their plane (within
+/// `tolerance`) one edge-neighbour at a time, never closing a vertex's fan,
+/// until retileFlatPatch succeeds or `maxFaces` are in. The plane is that
+/// of the largest face around on the seed's plane that faces the side most
+/// of their area faces (a fold's faces are slivers).
+/// \return whether it did.
+template <class MeshType>
+bool unfoldAround(typename MeshType::FaceType *seed, int j, double tolerance, double minAngleRad,
+                  std::size_t maxFaces) {
+  using FaceType = typename MeshType::FaceType;
+  std::vector<FaceType *> around;
+  for (int z = 0; z < 3; ++z) facesAround(seed, z, around);
+  std::sort(around.begin(), around.end());
+  around.erase(std::unique(around.begin(), around.end()), around.end());
+  const auto within = [&](const FaceType *f, const Vec3 &origin, const Vec3 &unitNormal) {
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(unitNormal * (positionOf(f->cV(k)) - origin)) > tolerance) return false;
+    return true;
+  };
+  // The side the flat faces around face: their area-weighted normals' sum.
+  Vec3 seedNormal = faceNormal(*seed);
+  if (!(seedNormal.Norm() > 0)) return false;
+  seedNormal /= seedNormal.Norm();
+  Vec3 areaNormal(0, 0, 0);
+  for (FaceType *f : around)
+    if (within(f, positionOf(seed->cV(0)), seedNormal)) areaNormal += faceNormal(*f);
+  FaceType *largest = nullptr;
+  for (FaceType *f : around)
+    if (within(f, positionOf(seed->cV(0)), seedNormal) && faceNormal(*f) * areaNormal > 0 &&
+        (!largest || faceNormal(*f).Norm() > faceNormal(*largest).Norm()))
+      largest = f;
+  if (!largest) return false;
+  Vec3 normal = faceNormal(*largest);
+  normal /= normal.Norm();
+  const Vec3 origin = positionOf(largest->cV(0));
+  const auto onPlane = [&](const FaceType *f) { return within(f, origin, normal); };
+  std::vector<FaceType *> patch{seed, seed->FFp(j)};
+  std::sort(patch.begin(), patch.end());
+  if (!onPlane(seed) || !onPlane(seed->FFp(j))) return false;
+  const auto inPatch = [&](const FaceType *f) {
+    return std::binary_search(patch.begin(), patch.end(), f);
+  };
+  const auto closesAFan = [&](FaceType *g) {
+    for (int z = 0; z < 3; ++z) {
+      std::vector<FaceType *> fan;
+      facesAround(g, z, fan);
+      if (std::all_of(fan.begin(), fan.end(), [&](FaceType *f) { return f == g || inPatch(f); }))
+        return true;
+    }
+    return false;
+  };
+  while (true) {
+    if (retileFlatPatch<MeshType>(patch, origin, normal, minAngleRad)) return true;
+    if (patch.size() >= maxFaces) return false;
+    FaceType *grow = nullptr;
+    for (FaceType *f : patch)
+      for (int k = 0; k < 3 && !grow; ++k) {
+        FaceType *g = f->FFp(k);
+        if (!inPatch(g) && onPlane(g) && !closesAFan(g)) grow = g;
+      }
+    if (!grow) return false;
+    patch.insert(std::upper_bound(patch.begin(), patch.end(), grow), grow);
+  }
+}
+
+/// Whether face `f` and its neighbour across edge `j` are folded over each
+/// other on one plane: normals opposite, each one's far vertex within
+/// `tolerance` of the other's plane.
+template <class FaceType>
+bool foldedOnPlane(const FaceType &f, int j, double tolerance) {
+  const FaceType *g = f.cFFp(j);
+  if (g == &f) return false;
+  const Vec3 nf = faceNormal(f), ng = faceNormal(*g);
+  if (!(nf.Norm() > 0 && ng.Norm() > 0) || nf * ng > -0.5 * nf.Norm() * ng.Norm()) return false;
+  const Vec3 onEdge = positionOf(f.cV(j));
+  const Vec3 farF = positionOf(f.cV((j + 2) % 3)) - onEdge;
+  const Vec3 farG = positionOf(g->cV((f.cFFi(j) + 2) % 3)) - onEdge;
+  return std::abs(nf * farG) <= tolerance * nf.Norm() &&
+         std::abs(ng * farF) <= tolerance * ng.Norm();
+}
+
+}  // namespace detail
+
+/// Finds the faces with a moved vertex (`isMoved(vertex index)`) folded
+/// over a neighbour on one plane (detail::foldedOnPlane, `tolerance`
+/// absolute) and tiles the flat patch around each fold again
+/// (detail::unfoldAround), tiles with angles of at least `minAngleRad`.
+/// Needs a closed 2-manifold with FF adjacency up to date; it stays so.
+/// Faces keep their slots and no element is added, so an ElementSnapshot
+/// taken before restores the mesh.
+template <class MeshType, class IsMoved>
+PlanarFoldStats unfoldPlanarPatches(MeshType &m, const IsMoved &isMoved, double tolerance,
+                                    double minAngleRad) {
+  using FaceType = typename MeshType::FaceType;
+  PlanarFoldStats stats;
+  const auto folded = [&](const FaceType &f) {
+    for (int j = 0; j < 3; ++j)
+      if (detail::foldedOnPlane(f, j, tolerance)) return true;
+    return false;
+  };
+  std::vector<FaceType *> seeds;
+  for (auto &f : m.face) {
+    if (f.IsD()) continue;
+    bool moved = false;
+    for (int k = 0; k < 3; ++k) moved = moved || isMoved(std::size_t(vcg::tri::Index(m, f.cV(k))));
+    if (moved && folded(f)) seeds.push_back(&f);
+  }
+  stats.folds = seeds.size();
+  for (FaceType *f : seeds)  // a patch tiled before may have taken this fold away
+    for (int j = 0; j < 3; ++j)
+      if (detail::foldedOnPlane(*f, j, tolerance)) {
+        stats.patches += detail::unfoldAround<MeshType>(f, j, tolerance, minAngleRad, 16);
+        break;
+      }
+  return stats;
+}
+
+}  // namespace edge_sharpener
