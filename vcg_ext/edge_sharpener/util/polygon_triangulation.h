@@ -10,6 +10,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "geometry.h"
+
 namespace edge_sharpener {
 
 using Vec2 = vcg::Point2d;
@@ -36,15 +38,7 @@ inline bool segmentsTouch(const Vec2 &p, const Vec2 &q, const Vec2 &r, const Vec
 
 /// The smallest angle (radians) of triangle abc; 0 when degenerate.
 inline double minAngle2(const Vec2 &a, const Vec2 &b, const Vec2 &c) {
-  const Vec2 p[3] = {a, b, c};
-  double smallest = M_PI;
-  for (int i = 0; i < 3; ++i) {
-    const Vec2 u = p[(i + 1) % 3] - p[i], v = p[(i + 2) % 3] - p[i];
-    const double nu = u.Norm(), nv = v.Norm();
-    if (!(nu > 0 && nv > 0)) return 0;
-    smallest = std::min(smallest, std::atan2(std::abs(u[0] * v[1] - u[1] * v[0]), u * v));
-  }
-  return smallest;
+  return minTriangleAngle(Vec3(a[0], a[1], 0), Vec3(b[0], b[1], 0), Vec3(c[0], c[1], 0));
 }
 
 }  // namespace detail
