@@ -54,7 +54,9 @@ NOTES = """What it changed and found (diagnosed by hand):
   cell of this reconstruction (depth 8 over 50 mm). Its four longest edge features (460-500
   new vertices each, flanks meeting at 88-89 degrees, lines along their chamfers) are restored
   to the sharp edge the designer bevelled; they hold most of the rise of both the max and the
-  RMS.
+  RMS. Its max is 0.371% with the long-move rule as committed (a corner vertex exempt); the
+  table written before that exemption read 0.284% (checked 2026-11-26: the same output at
+  b4d2b03, at 8849e2b and with the planar-fold stage off).
 - The two rules that came from the benchmark's tube (a narrow facet keeps its faces where two
   regions touch; an edge whose planes' line crosses its chamfer stays as it was) change no
   verdict here: two RMS figures moved in the third digit.
