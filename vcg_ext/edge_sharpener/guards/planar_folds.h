@@ -15,13 +15,16 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <utility>
 #include <vector>
 
 #include "../report.h"
 #include "../util/attributes.h"
+#include "../util/fast_topology.h"
 #include "../util/geometry.h"
+#include "../util/parallel.h"
 #include "../util/polygon_triangulation.h"
 
 namespace edge_sharpener {
@@ -30,6 +33,10 @@ namespace edge_sharpener {
 /// still count as on it: placement puts its vertices on the planes, and a
 /// remesher's samples of a flat face lie far closer than this to it.
 inline constexpr double kFoldPlaneSpacings = 0.1;
+/// The most faces a patch around a fold may grow to: a saddle corner's fold
+/// is undone within a few faces, and a fold no small patch undoes (a vertex
+/// moved out of its outline) is the intersection guard's.
+inline constexpr std::size_t kMaxFoldPatchFaces = 6;
 
 namespace detail {
 
@@ -238,26 +245,42 @@ template <class MeshType, class IsMoved>
 PlanarFoldStats unfoldPlanarPatches(MeshType &m, const IsMoved &isMoved, double tolerance,
                                     double minAngleRad) {
   using FaceType = typename MeshType::FaceType;
-  PlanarFoldStats stats;
-  const auto folded = [&](const FaceType &f) {
-    for (int j = 0; j < 3; ++j)
-      if (detail::foldedOnPlane(f, j, tolerance)) return true;
-    return false;
-  };
-  std::vector<FaceType *> seeds;
-  for (auto &f : m.face) {
-    if (f.IsD()) continue;
-    bool moved = false;
-    for (int k = 0; k < 3; ++k) moved = moved || isMoved(std::size_t(vcg::tri::Index(m, f.cV(k))));
-    if (moved && folded(f)) seeds.push_back(&f);
+  // Per vertex first, in memory order (cheaper than three lookups per face).
+  const std::int64_t vertexCount = std::int64_t(m.vert.size());
+  std::vector<char> moved(m.vert.size());
+#pragma omp parallel for schedule(static, 8192) if (vertexCount > kParallelMin)
+  for (std::int64_t v = 0; v < vertexCount; ++v) moved[v] = isMoved(std::size_t(v));
+  const std::int64_t faceCount = std::int64_t(m.face.size());
+  // Each thread lists the folded faces of its own range; the lists are read
+  // in range order, so the seeds' order does not depend on the thread count.
+  const int ranges = faceCount > kParallelMin ? detail::maxThreads() : 1;
+  std::vector<detail::PerThread<std::vector<FaceType *>>> found(ranges);
+#pragma omp parallel for schedule(static, 1) num_threads(ranges)
+  for (int t = 0; t < ranges; ++t) {
+    const std::int64_t begin = faceCount * t / ranges, end = faceCount * (t + 1) / ranges;
+    for (std::int64_t fi = begin; fi < end; ++fi) {
+      FaceType &f = m.face[fi];
+      if (f.IsD()) continue;
+      const auto *first = m.vert.data();
+      if (!moved[f.cV(0) - first] && !moved[f.cV(1) - first] && !moved[f.cV(2) - first]) continue;
+      for (int j = 0; j < 3; ++j)
+        if (detail::foldedOnPlane(f, j, tolerance)) {
+          found[t].value.push_back(&f);
+          break;
+        }
+    }
   }
-  stats.folds = seeds.size();
-  for (FaceType *f : seeds)  // a patch tiled before may have taken this fold away
-    for (int j = 0; j < 3; ++j)
-      if (detail::foldedOnPlane(*f, j, tolerance)) {
-        stats.patches += detail::unfoldAround<MeshType>(f, j, tolerance, minAngleRad, 16);
-        break;
-      }
+  PlanarFoldStats stats;
+  for (const auto &list : found)
+    for (FaceType *f : list.value) {
+      ++stats.folds;
+      for (int j = 0; j < 3; ++j)  // a patch tiled before may have taken this fold away
+        if (detail::foldedOnPlane(*f, j, tolerance)) {
+          stats.patches +=
+              detail::unfoldAround<MeshType>(f, j, tolerance, minAngleRad, kMaxFoldPatchFaces);
+          break;
+        }
+    }
   return stats;
 }
 
