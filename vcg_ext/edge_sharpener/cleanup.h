@@ -28,10 +28,6 @@ double faceMinAngle(const FaceType &f) {
   return minTriangleAngle(positionOf(f.cV(0)), positionOf(f.cV(1)), positionOf(f.cV(2)));
 }
 
-inline Vec3 triangleNormal(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
-  return (b - a) ^ (c - a);
-}
-
 template <class FaceType>
 int longestEdgeIndex(const FaceType &f) {
   int best = 0;
@@ -176,8 +172,8 @@ bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan
     // vertices and an input vertex meet at one target) has no orientation to
     // lose; a later collapse removes it.
     if (hasCoincidentCorners(q[0], q[1], q[2])) continue;
-    const Vec3 before = detail::triangleNormal(q[0], q[1], q[2]);
-    const Vec3 after = detail::triangleNormal(r[0], r[1], r[2]);
+    const Vec3 before = triangleNormal(q[0], q[1], q[2]);
+    const Vec3 after = triangleNormal(r[0], r[1], r[2]);
     if (!(before * after > 0)) return false;
   }
   removedFaces = cf->FFp(cz) == cf ? 1 : 2;  // a border edge has one face
@@ -205,8 +201,8 @@ bool flipCap(typename MeshType::FaceType &f, MeshLabels<MeshType> &labels) {
   const double before = std::min(minTriangleAngle(P, Q, R), minTriangleAngle(Q, P, S));
   const double after = std::min(minTriangleAngle(P, S, R), minTriangleAngle(S, Q, R));
   if (!(after > before)) return false;
-  const Vec3 reference = detail::triangleNormal(P, Q, R) + detail::triangleNormal(Q, P, S);
-  const Vec3 n1 = detail::triangleNormal(P, S, R), n2 = detail::triangleNormal(S, Q, R);
+  const Vec3 reference = triangleNormal(P, Q, R) + triangleNormal(Q, P, S);
+  const Vec3 n1 = triangleNormal(P, S, R), n2 = triangleNormal(S, Q, R);
   if (!(n1 * reference > 0 && n2 * reference > 0 && n1 * n2 > 0)) return false;
   vcg::face::FlipEdge(f, z);
   return true;

@@ -54,7 +54,7 @@ void facesAround(FaceType *f, int z, std::vector<FaceType *> &out) {
 
 template <class FaceType>
 Vec3 faceNormal(const FaceType &f) {
-  return (positionOf(f.cV(1)) - positionOf(f.cV(0))) ^ (positionOf(f.cV(2)) - positionOf(f.cV(0)));
+  return triangleNormal(positionOf(f.cV(0)), positionOf(f.cV(1)), positionOf(f.cV(2)));
 }
 
 /// Tiles `patch` (sorted) again on the plane (origin, unit normal), in
@@ -174,12 +174,14 @@ bool unfoldAround(typename MeshType::FaceType *seed, int j, double tolerance, do
   Vec3 seedNormal = faceNormal(*seed);
   if (!(seedNormal.Norm() > 0)) return false;
   seedNormal /= seedNormal.Norm();
+  std::vector<FaceType *> flat;
+  for (FaceType *f : around)
+    if (within(f, positionOf(seed->cV(0)), seedNormal)) flat.push_back(f);
   Vec3 areaNormal(0, 0, 0);
-  for (FaceType *f : around)
-    if (within(f, positionOf(seed->cV(0)), seedNormal)) areaNormal += faceNormal(*f);
+  for (FaceType *f : flat) areaNormal += faceNormal(*f);
   FaceType *largest = nullptr;
-  for (FaceType *f : around)
-    if (within(f, positionOf(seed->cV(0)), seedNormal) && faceNormal(*f) * areaNormal > 0 &&
+  for (FaceType *f : flat)
+    if (faceNormal(*f) * areaNormal > 0 &&
         (!largest || faceNormal(*f).Norm() > faceNormal(*largest).Norm()))
       largest = f;
   if (!largest) return false;

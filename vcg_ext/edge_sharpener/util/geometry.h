@@ -203,6 +203,11 @@ inline double minTriangleAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
   return std::isfinite(m) ? m : 0.0;
 }
 
+/// Normal of triangle abc, scaled by twice its area (zero when degenerate).
+inline Vec3 triangleNormal(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
+  return (b - a) ^ (c - a);
+}
+
 /// Largest interior angle of triangle abc in radians.
 inline double maxTriangleAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
   return std::max(
