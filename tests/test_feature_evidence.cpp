@@ -62,7 +62,7 @@ es::Feature feature(std::size_t vertices, std::size_t moved, double offPlane = 0
   f.vertices = vertices;
   f.moved = moved;
   f.maxOffPlane = offPlane;
-  f.offPlaneQ90 = offPlane;  // every sample that far
+  f.offPlaneQ90 = f.offPlaneMedian = offPlane;  // every sample that far
   f.corner = corner;
   return f;
 }
@@ -107,10 +107,10 @@ TEST(FeatureEvidence, DisconnectedStripsBetweenTheSameRegionsAreSeparateFeatures
 }
 
 TEST(FeatureEvidence, WeakWhenShortRefusedOrOffItsPlanes) {
-  es::SharpenOptions opt;  // 3 vertices, 40% refused, 0.6 spacings off plane
+  es::SharpenOptions opt;  // 3 vertices, half refused, 0.6 spacings off plane
   EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 10), opt));
-  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 6), opt));  // 40%: not more
-  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(10, 5), opt));
+  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 5), opt));  // half: not most
+  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(10, 4), opt));
   EXPECT_TRUE(es::featureEvidenceIsWeak(feature(2, 2), opt));
   EXPECT_FALSE(es::featureEvidenceIsWeak(feature(1, 1, 0, /*corner=*/true), opt));
   EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 10, 0.6), opt));
@@ -132,6 +132,27 @@ TEST(FeatureEvidence, AFewFarSamplesOfAnExactlySampledFeatureDoNotMakeItWeak) {
   everyFarSample.onPlaneSpacings = 0;
   f.offPlaneQ90 = 0.0;
   EXPECT_TRUE(es::featureEvidenceIsWeak(f, everyFarSample));
+}
+
+// A sampler that rounds the samples nearest an edge (a reconstruction, a
+// voxel remesher's corner cells) leaves half of them on their planes; a
+// blend or a bevel along the feature moves most of them off.
+TEST(FeatureEvidence, AFeatureMostlyOnItsPlanesIsNotWeak) {
+  const es::SharpenOptions opt;  // median within 0.1 spacings, none beyond 1
+  es::Feature f = feature(40, 40, /*offPlane=*/0.9);
+  f.offPlaneMedian = 0.05;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  f.offPlaneMedian = 0.1;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  f.offPlaneMedian = 0.2;  // a blend along it
+  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  f.offPlaneMedian = 0.05;
+  f.maxOffPlane = 1.2;  // a sample beyond a whole spacing
+  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  es::SharpenOptions off;
+  off.medianOnPlaneSpacings = 0;
+  f.maxOffPlane = 0.9;
+  EXPECT_TRUE(es::featureEvidenceIsWeak(f, off));
 }
 
 // A vertex of a feature kept goes back on its own evidence: a far sample,
@@ -165,13 +186,13 @@ TEST(FeatureEvidence, QuantileIsTheNearestRank) {
 }
 
 TEST(FeatureEvidence, VerticesCrossingToAnotherSheetCountAsRefused) {
-  es::SharpenOptions opt;  // 40% refused
+  es::SharpenOptions opt;  // most refused
   es::Feature f = feature(10, 10);
-  f.crossed = 4;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
   f.crossed = 5;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  f.crossed = 6;
   EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
-  f.moved = 8, f.crossed = 3;  // two refused, three crossed: 50%
+  f.moved = 8, f.crossed = 4;  // two refused, four crossed: 60%
   EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
 }
 

@@ -287,7 +287,8 @@ inline const std::vector<OptionSpec> &optionTable() {
       {"max_feature_fallback_fraction", "--feature-fallback", "", "Feature fallback fraction",
        "Auto method: a feature (a chamfer strip with its corners) stays as it was when more "
        "than this fraction of its new vertices were kept at rest by the other tests or would "
-       "move nearer another sheet of the surface (a thin wall's other side) than their own.",
+       "move nearer another sheet of the surface (a thin wall's other side) than their own "
+       "(the default: most of them).",
        T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_REAL(maxFeatureFallbackFraction)},
       {"max_feature_off_plane_spacings", "--feature-off-plane", "", "Feature off-plane distance",
@@ -301,6 +302,19 @@ inline const std::vector<OptionSpec> &optionTable() {
        "part: the new vertices they source stay at rest; 0: every far vertex counts).",
        T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
        ES_REAL(onPlaneSpacings)},
+      {"median_on_plane_spacings", "--on-plane-median", "", "Median on-plane tolerance",
+       "Auto method: ...or unless half of the feature's vertices lie within this distance of "
+       "their planes and none farther than --on-plane-median-max (a sampler that rounds a few "
+       "samples near the edge; a blend or a bevel along it moves most of them off: the new "
+       "vertices of the far ones stay at rest; 0: off).",
+       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(medianOnPlaneSpacings)},
+      {"max_median_on_plane_off_spacings", "--on-plane-median-max", "",
+       "Median on-plane: farthest vertex",
+       "Auto method: the farthest a vertex may lie from its plane for --on-plane-median to "
+       "apply.",
+       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(maxMedianOnPlaneOffSpacings)},
       {"min_feature_vertices", "--min-feature-vertices", "", "Minimum feature size",
        "Auto method: a feature with fewer new vertices than this stays as it was.",
        T::Integer, G::EvidenceGuard, "vertices", 0, 1000, false, kNotInMeshLab, {}, {},

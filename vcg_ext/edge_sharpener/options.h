@@ -156,9 +156,9 @@ struct SharpenOptions {
   double minPlanarAreaFraction = 0.3;
   /// A feature goes back to rest whole when more than this fraction of its
   /// inserted vertices were refused by the other tests or moved across to
-  /// another sheet of the input (feature_evidence.h: crossesSheet): the
-  /// bound the whole mesh is held to, held to each feature...
-  double maxFeatureFallbackFraction = 0.4;
+  /// another sheet of the input (feature_evidence.h: crossesSheet): when
+  /// most of it was refused. Below that, each refusal stays a vertex's own...
+  double maxFeatureFallbackFraction = 0.5;
   /// ...or when one of its source vertices lies off its plane by more than
   /// this many sample spacings...
   double maxFeatureOffPlaneSpacings = 0.6;
@@ -168,6 +168,15 @@ struct SharpenOptions {
   /// meets another part, not on a blend along it. The new vertices those
   /// far samples source stay at rest. 0: every far sample counts.
   double onPlaneSpacings = 0.05;
+  /// ...or unless half of its source vertices lie within this many sample
+  /// spacings of their planes and none farther than
+  /// `maxMedianOnPlaneOffSpacings`: a sampler that rounds a few samples
+  /// near the edge (a reconstruction, a voxel remesher's corner cells) but
+  /// puts most on the surface, where a blend or a bevel along the feature
+  /// moves most of them off it. As above, only the far samples' new
+  /// vertices stay at rest. 0: off.
+  double medianOnPlaneSpacings = 0.1;
+  double maxMedianOnPlaneOffSpacings = 1.0;
   /// ...or when it has fewer than this many inserted vertices...
   int minFeatureVertices = 3;
   /// ...or, for an edge, when its flanks' planes meet at less than this

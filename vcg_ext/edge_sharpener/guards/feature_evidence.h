@@ -58,6 +58,10 @@ struct Feature {
   /// samples on the surface, whatever a few samples where it meets another
   /// part do.
   double offPlaneQ90 = 0;
+  /// ...and within which half of them lie: near 0 too where a sampler
+  /// rounds only the samples nearest the edge, large along a blend or a
+  /// bevel.
+  double offPlaneMedian = 0;
   /// Edge features: the median angle (radians, planeMeetingAngle) at which
   /// its vertices' two flank planes meet; pi/2 where none has both planes.
   double flankAngleRad = M_PI / 2;
@@ -260,6 +264,7 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
     features[c].maxOffPlane =
         offPlane[c].empty() ? 0 : *std::max_element(offPlane[c].begin(), offPlane[c].end());
     features[c].offPlaneQ90 = detail::quantileOf(offPlane[c], 0.9);
+    features[c].offPlaneMedian = detail::quantileOf(offPlane[c], 0.5);
     features[c].flankAngleRad = angles[c].empty() ? M_PI / 2 : detail::medianOf(angles[c]);
     features[c].lineChamferAngleRad = lineAngles[c].empty() ? 0 : detail::medianOf(lineAngles[c]);
   }
@@ -377,11 +382,11 @@ inline double medianLift(const std::vector<double> &lifts) {
 
 /// Whether a feature has too little evidence to be sharpened: too short to
 /// be a feature, an edge whose flanks meet at too shallow an angle or on a
-/// line that crosses its chamfer instead of running along it, too many
-/// of its vertices refused by the other tests, or one of its samples far off
-/// the plane its flank extrapolates, unless nine in ten of them lie on their
-/// planes (then only the far samples' new vertices stay at rest:
-/// EvidenceGuard::vertexIsWeak).
+/// line that crosses its chamfer instead of running along it, most of its
+/// vertices refused by the other tests, or one of its samples far off the
+/// plane its flank extrapolates, unless nine in ten of them lie on their
+/// planes, or half of them do and none lies much farther (then only the far
+/// samples' new vertices stay at rest: EvidenceGuard::vertexIsWeak).
 inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
   if (!f.corner && f.vertices < std::size_t(opt.minFeatureVertices)) return true;
   if (!f.corner && f.flankAngleRad < opt.minFeatureAngleRad) return true;
@@ -389,7 +394,11 @@ inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
       f.lineChamferAngleRad > opt.maxFeatureLineChamferAngleRad)
     return true;
   const bool sampledOnItsPlanes = opt.onPlaneSpacings > 0 && f.offPlaneQ90 <= opt.onPlaneSpacings;
-  if (f.maxOffPlane > opt.maxFeatureOffPlaneSpacings && !sampledOnItsPlanes) return true;
+  const bool mostlyOnItsPlanes = opt.medianOnPlaneSpacings > 0 &&
+                                 f.offPlaneMedian <= opt.medianOnPlaneSpacings &&
+                                 f.maxOffPlane <= opt.maxMedianOnPlaneOffSpacings;
+  if (f.maxOffPlane > opt.maxFeatureOffPlaneSpacings && !sampledOnItsPlanes && !mostlyOnItsPlanes)
+    return true;
   return double(f.vertices - f.moved + f.crossed) >
          opt.maxFeatureFallbackFraction * double(f.vertices);
 }
