@@ -155,6 +155,27 @@ TEST(FeatureEvidence, AFeatureMostlyOnItsPlanesIsNotWeak) {
   EXPECT_TRUE(es::featureEvidenceIsWeak(f, off));
 }
 
+// The line an acute edge's planes meet on moves farther with their errors
+// (over the sine of their angle): its samples are allowed less.
+TEST(FeatureEvidence, AnAcuteEdgeMostlyOnItsPlanesIsAllowedLess) {
+  const es::SharpenOptions opt;
+  const double deg = M_PI / 180;
+  es::Feature f = feature(40, 40, /*offPlane=*/0.8);
+  f.offPlaneMedian = 0.05;
+  f.flankAngleRad = 60 * deg;  // allows 0.87 spacings
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  f.flankAngleRad = 45 * deg;  // allows 0.71
+  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  f.maxOffPlane = 0.65;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  f.offPlaneMedian = 0.08;  // beyond 0.1 x sin 45 degrees
+  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  es::Feature corner = feature(1, 1, /*offPlane=*/0.8, /*corner=*/true);
+  corner.offPlaneMedian = 0.05;
+  corner.flankAngleRad = 30 * deg;  // a corner's angle is not an edge's
+  EXPECT_FALSE(es::featureEvidenceIsWeak(corner, opt));
+}
+
 // A vertex of a feature kept goes back on its own evidence: a far sample,
 // or a long move from samples off their planes.
 TEST(FeatureEvidence, ALongMoveNeedsItsSamplesOnTheirPlanes) {

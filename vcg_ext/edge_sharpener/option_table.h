@@ -306,7 +306,8 @@ inline const std::vector<OptionSpec> &optionTable() {
        "Auto method: ...or unless half of the feature's vertices lie within this distance of "
        "their planes and none farther than --on-plane-median-max (a sampler that rounds a few "
        "samples near the edge; a blend or a bevel along it moves most of them off: the new "
-       "vertices of the far ones stay at rest; 0: off).",
+       "vertices of the far ones stay at rest; for an edge, both distances times the sine of "
+       "the angle its flanks meet at; 0: off).",
        T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
        ES_REAL(medianOnPlaneSpacings)},
       {"max_median_on_plane_off_spacings", "--on-plane-median-max", "",

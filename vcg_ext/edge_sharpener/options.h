@@ -173,8 +173,10 @@ struct SharpenOptions {
   /// `maxMedianOnPlaneOffSpacings`: a sampler that rounds a few samples
   /// near the edge (a reconstruction, a voxel remesher's corner cells) but
   /// puts most on the surface, where a blend or a bevel along the feature
-  /// moves most of them off it. As above, only the far samples' new
-  /// vertices stay at rest. 0: off.
+  /// moves most of them off it. For an edge, both bounds are multiplied by
+  /// the sine of the angle its flanks' planes meet at: the line they meet
+  /// on moves by their errors over that sine. As above, only the far
+  /// samples' new vertices stay at rest. 0: off.
   double medianOnPlaneSpacings = 0.1;
   double maxMedianOnPlaneOffSpacings = 1.0;
   /// ...or when it has fewer than this many inserted vertices...

@@ -385,8 +385,9 @@ inline double medianLift(const std::vector<double> &lifts) {
 /// line that crosses its chamfer instead of running along it, most of its
 /// vertices refused by the other tests, or one of its samples far off the
 /// plane its flank extrapolates, unless nine in ten of them lie on their
-/// planes, or half of them do and none lies much farther (then only the far
-/// samples' new vertices stay at rest: EvidenceGuard::vertexIsWeak).
+/// planes, or half of them do and none lies much farther, both bounds times
+/// the sine of the angle its flanks meet at (then only the far samples' new
+/// vertices stay at rest: EvidenceGuard::vertexIsWeak).
 inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
   if (!f.corner && f.vertices < std::size_t(opt.minFeatureVertices)) return true;
   if (!f.corner && f.flankAngleRad < opt.minFeatureAngleRad) return true;
@@ -394,9 +395,12 @@ inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
       f.lineChamferAngleRad > opt.maxFeatureLineChamferAngleRad)
     return true;
   const bool sampledOnItsPlanes = opt.onPlaneSpacings > 0 && f.offPlaneQ90 <= opt.onPlaneSpacings;
+  // The line two planes meet on moves by their errors over the sine of the
+  // angle between them: an acute edge allows its samples less.
+  const double sine = f.corner ? 1.0 : std::sin(f.flankAngleRad);
   const bool mostlyOnItsPlanes = opt.medianOnPlaneSpacings > 0 &&
-                                 f.offPlaneMedian <= opt.medianOnPlaneSpacings &&
-                                 f.maxOffPlane <= opt.maxMedianOnPlaneOffSpacings;
+                                 f.offPlaneMedian <= opt.medianOnPlaneSpacings * sine &&
+                                 f.maxOffPlane <= opt.maxMedianOnPlaneOffSpacings * sine;
   if (f.maxOffPlane > opt.maxFeatureOffPlaneSpacings && !sampledOnItsPlanes && !mostlyOnItsPlanes)
     return true;
   return double(f.vertices - f.moved + f.crossed) >
