@@ -12,18 +12,11 @@ after scripts/bench-quality.sh), test_meshes/real and ../shared/meshes. Distance
 mesh-distance --sampling meshlab, "worse" by the benchmark's rule (bench/quality/families.py).
 Needs Debian's python3-open3d; the meshes are written to BUILD/heldout-open3d-poisson.
 """
-import argparse
-import json
 import os
-import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-SOURCE = os.path.dirname(os.path.dirname(HERE))
-sys.path[:0] = [os.path.join(SOURCE, "bench", "quality"), os.path.join(SOURCE, "bench", "study")]
-import families  # noqa: E402
-import run as quality_run  # noqa: E402
-from evidence_study import references  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import heldout  # noqa: E402
 
 POINTS = 200000
 DEPTH = 8
@@ -64,6 +57,14 @@ NOTES = """What it changed and found (diagnosed by hand):
   only ADIS16480 and abc6 worse here, but halves the gains on the benchmark's own marching
   cubes (validation half x8.13 / x20.1 -> x3.97 / x8.60), whose acute edges move farther:
   not adopted.
+- The mostly-on-plane exemption and the "most refused" feature bound (2026-11-27, chosen on
+  the benchmark's tuning half) leave every verdict as it was and raise the means (tuning max
+  x1.02 -> x1.07, RMS x1.67 -> x1.84; validation RMS x1.80 -> x1.81); abc6's max rises
+  0.230% -> 0.235%. Run before the exemption's bounds were scaled by the sine of the angle the
+  flanks meet at, this check read the wedge's max 0.540% -> 0.608%: its acute edge's features
+  passed the exemption. The scaling (an error in the planes moves their line by the error over
+  that sine, as for the minimum feature angle) was added after seeing it, so for that rule
+  this check is not blind; the wedge reads 0.540% again.
 """
 
 
@@ -85,73 +86,24 @@ def reconstruct(reference, out):
     o3d.io.write_triangle_mesh(out, poisson)
 
 
-def distance(tool, mesh, reference):
-    p = subprocess.run([tool, mesh, reference, "--json", "--sampling", "meshlab", "--samples",
-                        str(quality_run.DISTANCE_SAMPLES)], capture_output=True, text=True, check=True)
-    d = json.loads(p.stdout)["symmetric"]
-    return {"max": d["max_percent"], "rms": d["rms_percent"]}
-
-
 def main():
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--build", default=os.path.join(SOURCE, "build"))
-    ap.add_argument("--shared", default=os.path.join(SOURCE, "..", "shared", "meshes"))
-    ap.add_argument("--method", default="auto")
-    ap.add_argument("--out", help="also write the table to this markdown file")
-    ap.add_argument("extra", nargs="*", help="further edge-sharpener options (after --)")
-    args = ap.parse_args()
-    try:
-        import open3d  # noqa: F401
-    except ImportError:
-        sys.exit("open3d_poisson: Open3D (Debian python3-open3d) is not installed")
-    sharpener = os.path.join(args.build, "apps", "edge-sharpener")
-    tool = os.path.join(args.build, "apps", "mesh-distance")
+    args = heldout.parse_args(__doc__)
+    heldout.require_open3d("open3d_poisson")
     work = os.path.join(args.build, "heldout-open3d-poisson")
     os.makedirs(work, exist_ok=True)
-    split = json.load(open(os.path.join(SOURCE, "bench", "quality", "split.json")))
-    half = {m: h for h in ("tuning", "validation") for m in split[h]}
-    rows, worse, factors = [], [], {"tuning": [], "validation": []}
-    refs = references(os.path.join(args.build, "quality-cache"), args.shared)
-    refs.pop("chamfer-cube", None)  # its reference is another shape (the sharp box)
-    for name, ref in sorted(refs.items()):
+    half = heldout.halves()
+    table = heldout.Table(f"Open3D Screened Poisson, depth {DEPTH}, {POINTS} exact oriented "
+                          "points", args)
+    for name, ref in sorted(heldout.held_out_references(args).items()):
         made = os.path.join(work, f"{name}.ply")
         if not os.path.exists(made):
             reconstruct(ref, made)
-        sharpened = os.path.join(work, f"{name}__{args.method}.ply")
-        run = subprocess.run([sharpener, made, sharpened, "--method", args.method, "--quiet",
-                              *args.extra], capture_output=True, text=True)
-        h = half.get(name, "?")
-        if run.returncode != 0:
-            rows.append(f"| {name} | {h} | refused: {run.stderr.strip()} | | |")
-            continue
-        before, after = distance(tool, made, ref), distance(tool, sharpened, ref)
-        bad = families.is_worse(before, after)
-        if bad:
-            worse.append(name)
-        if h in factors and name not in families.NO_SHARP_FEATURES:
-            factors[h].append((before["max"] / after["max"], before["rms"] / after["rms"]))
-        rows.append(f"| {name} | {h} | {before['max']:.3g} -> {after['max']:.3g} | "
-                    f"{before['rms']:.3g} -> {after['rms']:.3g} | {'**worse**' if bad else ''} |")
-    lines = [f"Open3D Screened Poisson, depth {DEPTH}, {POINTS} exact oriented points; "
-             f"`--method {args.method}` {' '.join(args.extra)}", "",
-             "| reference | half | max (% diag) | RMS (% diag) | |", "|---|---|---|---|---|",
-             *rows, ""]
-    for h, fs in factors.items():
-        if fs:
-            lines.append(f"{h}: geometric means max ×{families._gmean([f[0] for f in fs]):.2f} "
-                         f"/ RMS ×{families._gmean([f[1] for f in fs]):.2f} over {len(fs)}")
-    lines.append(f"worse: {len(worse)} of {len(rows)}" + (f" ({', '.join(worse)})" if worse else ""))
-    text = "\n".join(lines)
+        table.measure(name, half.get(name, "?"), made, ref)
+    text = table.text()
     print(text)
     if args.out:
-        with open(args.out, "w") as f:
-            f.write("# Held-out check: a tool outside the benchmark\n\n"
-                    "Written by `/usr/bin/python3 bench/heldout/open3d_poisson.py --out "
-                    f"{os.path.relpath(args.out, SOURCE)}` (about 3 minutes). No threshold was "
-                    "fitted to it. Distances in % of the reference's diagonal (mesh-distance "
-                    "--sampling meshlab); **worse** = max up by more than 2% or RMS by more "
-                    "than 1%.\n\n" + text + "\n\n" + NOTES)
+        heldout.write_markdown(args, "Held-out check: a tool outside the benchmark",
+                               "open3d_poisson.py", 3, text + "\n\n" + NOTES)
 
 
 if __name__ == "__main__":
