@@ -25,10 +25,8 @@ def main():
                                               MULTIPLIER, width=24)
     for c, before, after in outcomes:
         min_max, min_rms = MIN_FACTORS[c["model"]]
-        got_max, got_rms = before["max"] / after["max"], before["rms"] / after["rms"]
-        if got_max < min_max or got_rms < min_rms:
-            failures.append(f"{c['model']} {c['input']} {c['resolution']}: max x{got_max:.2f} / "
-                            f"RMS x{got_rms:.2f} < x{min_max} / x{min_rms}")
+        checks.require_factor(c, before, after, "max", min_max, failures)
+        checks.require_factor(c, before, after, "rms", min_rms, failures)
     checks.require_measured(outcomes, ("model", "resolution"), EXPECTED, failures)
     checks.finish(failures, "features mostly on their planes: sharpened, none made worse")
 

@@ -31,7 +31,7 @@ def main():
     for c, before, after in outcomes:
         bound = need.get((c["model"], c["resolution"]))
         if bound:
-            checks.require_rms_factor(c, before, after, bound, failures)
+            checks.require_factor(c, before, after, "rms", bound, failures)
     checks.require_measured(outcomes, ("model", "resolution"), EXPECTED, failures)
     checks.finish(failures, "on-plane features: sharpened, none made worse")
 

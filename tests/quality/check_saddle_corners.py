@@ -24,9 +24,7 @@ def main():
     outcomes = checks.default_method_outcomes(checks.load_results()["cases"], failures,
                                               MULTIPLIER, width=24)
     for c, before, after in outcomes:
-        if before["max"] < MIN_MAX_FACTOR * after["max"]:
-            failures.append(f"{c['model']} {c['input']} {c['resolution']}: max "
-                            f"x{before['max'] / after['max']:.2f} < x{MIN_MAX_FACTOR}")
+        checks.require_factor(c, before, after, "max", MIN_MAX_FACTOR, failures)
     checks.require_measured(outcomes, ("model", "resolution"), EXPECTED, failures)
     checks.finish(failures, "saddle corners: sharpened, max error down")
 

@@ -24,7 +24,7 @@ def main():
     outcomes = checks.default_method_outcomes(checks.load_results()["cases"], failures, MULTIPLIER)
     for c, before, after in outcomes:
         if (c["model"], c["input"]) == ("cross_prism", "poisson"):
-            checks.require_rms_factor(c, before, after, MIN_POISSON_RMS_FACTOR, failures)
+            checks.require_factor(c, before, after, "rms", MIN_POISSON_RMS_FACTOR, failures)
     expected = {("cross_prism", "poisson")}
     if len(sys.argv) > 2:  # rocker-arm's results too
         expected.add(("rocker-arm", "vdb"))

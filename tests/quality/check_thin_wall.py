@@ -24,7 +24,7 @@ def main():
                                               MULTIPLIER, width=16)
     for c, before, after in outcomes:
         if c["input"] == "csg":
-            checks.require_rms_factor(c, before, after, MIN_CSG_RMS_FACTOR, failures)
+            checks.require_factor(c, before, after, "rms", MIN_CSG_RMS_FACTOR, failures)
     checks.require_measured(outcomes, ("input", "resolution"), EXPECTED, failures)
     checks.finish(failures, "thin wall: the default method made neither input worse")
 

@@ -62,12 +62,13 @@ def default_method_outcomes(cases, failures, multiplier=2.0, width=28):
     return out
 
 
-def require_rms_factor(case, before, after, bound, failures):
-    """Appends a failure when the default method lowered the case's RMS error by less than
-    the factor `bound`."""
-    if before["rms"] < bound * after["rms"]:
-        failures.append(f"{case['model']} {case['input']} {case['resolution']}: RMS "
-                        f"x{before['rms'] / after['rms']:.2f} < x{bound}")
+def require_factor(case, before, after, quantity, bound, failures):
+    """Appends a failure when the default method lowered the case's `quantity` ("max" or
+    "rms") by less than the factor `bound`."""
+    if before[quantity] < bound * after[quantity]:
+        failures.append(f"{case['model']} {case['input']} {case['resolution']}: "
+                        f"{'RMS' if quantity == 'rms' else quantity} "
+                        f"x{before[quantity] / after[quantity]:.2f} < x{bound}")
 
 
 def require_measured(outcomes, fields, expected, failures):
