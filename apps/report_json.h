@@ -28,7 +28,8 @@ inline nlohmann::json optionsToJson(const SharpenOptions &opt) {
 inline nlohmann::json reportToJson(const SharpenReport &r) {
   nlohmann::json placement = {{"moved", r.placement.moved()},
                               {"fallbacks", r.placement.fallbacks()},
-                              {"max_displacement", r.placement.maxDisplacement}};
+                              {"max_displacement", r.placement.maxDisplacement},
+                              {"moved_across_bends", r.placement.movedAcrossBends}};
   for (int i = 0; i < kPlacementCount; ++i) {
     const auto p = static_cast<Placement>(i);
     if (p != Placement::Original && p != Placement::Moved)

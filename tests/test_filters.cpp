@@ -341,13 +341,30 @@ TEST(Fallbacks, CornerPairBendsAwayWhereTheCornerDoesNot) {
   EXPECT_FALSE(es::detail::flankBendsAway(corner, planes, support, opt, Vec3(0, 0, 0)));
   EXPECT_TRUE(es::detail::cornerPairBendsAway(corner, planes, support, opt));
   Vec3 target;
-  EXPECT_EQ(es::proposePlacement(corner, support, opt, target), es::Placement::CurvedSupport);
+  bool bent = false;
+  EXPECT_EQ(es::proposePlacement(corner, support, opt, target, bent), es::Placement::CurvedSupport);
 
   // A gently curved side passes both: the corner is sharpened.
   curveSide(0.5);
   EXPECT_FALSE(es::detail::cornerPairBendsAway(corner, planes, support, opt));
-  ASSERT_EQ(es::proposePlacement(corner, support, opt, target), es::Placement::Moved);
+  ASSERT_EQ(es::proposePlacement(corner, support, opt, target, bent), es::Placement::Moved);
   EXPECT_LT(target.Norm(), 1e-12);
+  EXPECT_FALSE(bent);
+
+  // The auto method: where the move (0.17) is at most maxBentMoveSpacings
+  // sample spacings, the bend only marks the vertex, which moves to the
+  // corner and stays there only with a feature whose evidence is strong.
+  curveSide(5.0);
+  opt.method = es::Method::Auto;
+  support.sampleSpacing = 0.2;
+  ASSERT_EQ(es::proposePlacement(corner, support, opt, target, bent), es::Placement::Moved);
+  EXPECT_TRUE(bent);
+  EXPECT_LT(target.Norm(), 1e-12);
+  support.sampleSpacing = 0.1;  // a longer move extrapolates the curved flank
+  EXPECT_EQ(es::proposePlacement(corner, support, opt, target, bent), es::Placement::CurvedSupport);
+  support.sampleSpacing = 0.2;
+  opt.maxBentMoveSpacings = 0;  // off: the bend keeps the vertex at rest
+  EXPECT_EQ(es::proposePlacement(corner, support, opt, target, bent), es::Placement::CurvedSupport);
 }
 
 // An inserted vertex whose sharp edge lies more than maxDisplacementSpacings
@@ -370,15 +387,16 @@ TEST(Fallbacks, SharpEdgeFarAwayKeepsVertexAtRest) {
   es::SharpenOptions opt = es::SharpenOptions::paperMethod();
   opt.method = es::Method::Extended;
   Vec3 target;
-  ASSERT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::Moved);
+  bool bent = false;
+  ASSERT_EQ(es::proposePlacement(edge, support, opt, target, bent), es::Placement::Moved);
   EXPECT_LT(target.Norm(), 1e-12);
 
   // The sharp edge lies 0.141 from the chamfer's middle, more than 2.5
   // sample spacings of 0.05 but less than 2.5 x 0.1.
   support.sampleSpacing = 0.05;
-  EXPECT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::FarFromChamfer);
+  EXPECT_EQ(es::proposePlacement(edge, support, opt, target, bent), es::Placement::FarFromChamfer);
   opt.maxDisplacementSpacings = 0;  // bound off
-  EXPECT_EQ(es::proposePlacement(edge, support, opt, target), es::Placement::Moved);
+  EXPECT_EQ(es::proposePlacement(edge, support, opt, target, bent), es::Placement::Moved);
 }
 
 // The intersection guard's broad phase: a hashed grid over the query boxes.

@@ -123,6 +123,15 @@ struct SharpenOptions {
   /// also for each pair of its planes toward their own line. Negative
   /// disables the test.
   double maxBendFraction = 0.45;
+  /// Auto method: a vertex the bend test would keep at rest moves instead
+  /// when its move is at most this many sample spacings and nothing else
+  /// refuses it; it stays moved only with a feature whose evidence is
+  /// strong, and counts as refused in that evidence (its feature's and the
+  /// whole mesh's). A sampler rounds a sharp edge most near its corners,
+  /// where the fitted faces bend like a blend's, by about one sample
+  /// spacing; a longer move across a bend extrapolates a curved flank.
+  /// 0: the bend keeps every vertex at rest (the extended method always does).
+  double maxBentMoveSpacings = 1.0;
   /// ...tested where the fitted faces spread by at least this angle
   /// (radians): below it, marching cubes' staircase dominates the estimate...
   double minBendSpreadRad = 5.0 * M_PI / 180.0;

@@ -323,11 +323,26 @@ inline Verdict displacementTooLarge(const InsertedVertexSource &src, const Suppo
   return std::nullopt;
 }
 
+/// Whether the bend test only marks a vertex (MeshLabels::bentFlank) instead
+/// of keeping it at rest, for a move to `target`: in the auto method, a move
+/// within SharpenOptions::maxBentMoveSpacings is left to its feature's
+/// evidence (a sampler's rounding, not a curved flank extrapolated far).
+inline bool bendOnlyMarks(const InsertedVertexSource &src, const SupportPlanes &support,
+                          const SharpenOptions &opt, const Vec3 &target) {
+  return opt.method == Method::Auto && opt.maxBentMoveSpacings > 0 && support.sampleSpacing > 0 &&
+         (target - src.rest).Norm() <= opt.maxBentMoveSpacings * support.sampleSpacing;
+}
+
 /// The vetoes that need the paper's target, in the order they are tried.
+/// `bent`: whether the flank bends away, when that alone does not keep the
+/// vertex at rest (bendOnlyMarks).
 inline Verdict anyAtTarget(const InsertedVertexSource &src, const Plane *planes,
                            const SupportPlanes &support, const SharpenOptions &opt,
-                           const Vec3 &target) {
-  if (Verdict v = flankBendsAway(src, planes, support, opt, target)) return v;
+                           const Vec3 &target, bool &bent) {
+  if (Verdict v = flankBendsAway(src, planes, support, opt, target)) {
+    if (!bendOnlyMarks(src, support, opt, target)) return v;
+    bent = true;
+  }
   if (Verdict v = passesIntermediateRegion(src, planes, support, opt, target)) return v;
   if (Verdict v = apexTooHigh(src, planes, opt, target)) return v;
   return displacementTooLarge(src, support, opt, target);
@@ -337,9 +352,11 @@ inline Verdict anyAtTarget(const InsertedVertexSource &src, const Plane *planes,
 
 /// Where the planes put one inserted vertex, before the edge-length check:
 /// the paper's placement, and for the extended method its vetoes.
-/// \return the outcome and, for Placement::Moved, the target in `target`.
+/// \return the outcome and, for Placement::Moved, the target in `target` and
+///         in `bent` whether a flank bends away before it (veto::anyAtTarget).
 inline Placement proposePlacement(const InsertedVertexSource &src, const SupportPlanes &support,
-                                  const SharpenOptions &opt, Vec3 &target) {
+                                  const SharpenOptions &opt, Vec3 &target, bool &bent) {
+  bent = false;
   Plane planes[3];
   for (int i = 0; i < src.originalCount; ++i) {
     planes[i] = support.plane(src.original[i]);
@@ -350,7 +367,7 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
     if (veto::Verdict v = veto::regionsTurnLikeABlend(src, planes, support, opt)) return *v;
   const Placement paper = paperPlacement(src, planes, opt, target);
   if (!extended || paper != Placement::Moved) return paper;
-  return veto::anyAtTarget(src, planes, support, opt, target).value_or(Placement::Moved);
+  return veto::anyAtTarget(src, planes, support, opt, target, bent).value_or(Placement::Moved);
 }
 
 /// Edge-length check (paper, Figure 7): an inserted vertex may not create an
@@ -409,9 +426,11 @@ void placeInsertedVertices(MeshType &m, const SplitPlan &plan, MeshLabels<MeshTy
   for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
     insertedPos[k] = plan.inserted[k].rest;
     Vec3 target;
-    const Placement p = proposePlacement(plan.inserted[k], support, opt, target);
+    bool bent = false;
+    const Placement p = proposePlacement(plan.inserted[k], support, opt, target, bent);
     if (p == Placement::Moved) insertedPos[k] = target;
     labels.placement[n0 + k] = p;
+    labels.bentFlank[n0 + k] = p == Placement::Moved && bent;
   }
   if (opt.edgeLengthCheck) {
     const double factor = usesFeatureZones(opt.method) ? opt.extendedEdgeLengthFactor : 1.0;

@@ -47,6 +47,9 @@ struct SubdivisionStats {
 struct PlacementStats {
   std::array<std::size_t, kPlacementCount> byOutcome{};  ///< indexed by Placement
   double maxDisplacement = 0;  ///< largest distance an inserted vertex moved
+  /// Of the moved, those moved with their feature across a bending flank
+  /// (SharpenOptions::maxBentMoveSpacings).
+  std::size_t movedAcrossBends = 0;
   std::size_t count(Placement p) const { return byOutcome[static_cast<int>(p)]; }
   std::size_t moved() const { return count(Placement::Moved); }
   std::size_t fallbacks() const {
@@ -172,7 +175,10 @@ inline void formatPlacement(std::ostream &s, const SharpenReport &r) {
     << r.subdivision.insertedVertices << " vertices and " << r.subdivision.addedFaces
     << " faces added\n";
   s << "placement: " << r.placement.moved() << " moved (max displacement "
-    << r.placement.maxDisplacement << "), " << r.placement.fallbacks() << " kept by fallback";
+    << r.placement.maxDisplacement;
+  if (r.placement.movedAcrossBends > 0)
+    s << "; " << r.placement.movedAcrossBends << " with their feature across a bending flank";
+  s << "), " << r.placement.fallbacks() << " kept by fallback";
   for (int i = 0; i < kPlacementCount; ++i) {
     auto p = static_cast<Placement>(i);
     if (p == Placement::Original || p == Placement::Moved || r.placement.byOutcome[i] == 0)

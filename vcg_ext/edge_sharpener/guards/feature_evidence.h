@@ -218,17 +218,20 @@ std::vector<std::vector<double>> sourceOffPlanes(const MeshType &m,
 }
 
 /// Counts, per feature, its inserted vertices still in the mesh and those
-/// placed on their planes (Feature::vertices, Feature::moved).
+/// placed on their planes (Feature::vertices, Feature::moved). A vertex
+/// moved across a bending flank (MeshLabels::bentFlank) counts as refused:
+/// it moves on its feature's evidence, not its own.
 template <class MeshType>
 void countFeatureMoves(const MeshType &m, const VertexMoves<MeshType> &moves,
                        const std::vector<std::uint32_t> &featureOf,
                        std::vector<Feature> &features) {
   for (Feature &f : features) f.vertices = f.moved = 0;
   const std::size_t first = moves.firstInserted();
+  const auto &bent = moves.labels().bentFlank;
   for (std::size_t k = 0; k < featureOf.size(); ++k) {
     if (m.vert[first + k].IsD()) continue;
     ++features[featureOf[k]].vertices;
-    features[featureOf[k]].moved += moves.isMoved(first + k);
+    features[featureOf[k]].moved += moves.isMoved(first + k) && !bent[first + k];
   }
 }
 

@@ -34,6 +34,7 @@ class VertexMoves {
 
   const SplitPlan &plan() const { return plan_; }
   MeshLabels<MeshType> &labels() { return labels_; }
+  const MeshLabels<MeshType> &labels() const { return labels_; }
   std::size_t firstInserted() const { return plan_.originalVertexCount; }
   bool isInserted(std::size_t v) const {
     return v >= firstInserted() && v - firstInserted() < plan_.inserted.size();
@@ -90,9 +91,10 @@ class VertexMoves {
       const auto &v = m_.vert[firstInserted() + k];
       if (v.IsD()) continue;
       ++s.byOutcome[int(labels_.placement[&v])];
-      if (isMoved(firstInserted() + k))
-        s.maxDisplacement =
-            std::max(s.maxDisplacement, (positionOf(&v) - plan_.inserted[k].rest).Norm());
+      if (!isMoved(firstInserted() + k)) continue;
+      s.maxDisplacement =
+          std::max(s.maxDisplacement, (positionOf(&v) - plan_.inserted[k].rest).Norm());
+      s.movedAcrossBends += labels_.bentFlank[&v] != 0;
     }
     return s;
   }

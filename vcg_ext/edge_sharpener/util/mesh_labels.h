@@ -86,7 +86,8 @@ struct MeshLabels {
         edge(m, EdgeLabels3{EdgeLabel::Gray, EdgeLabel::Gray, EdgeLabel::Gray}),
         normal(m),
         vertex(m, VertexLabel::Gray),
-        placement(m, Placement::Original) {}
+        placement(m, Placement::Original),
+        bentFlank(m, 0) {}
 
   ScopedFaceAttribute<MeshType, FaceLabel> face;
   /// Label of edge i (from V(i) to V(i+1)) of each face; equal on both sides.
@@ -96,6 +97,10 @@ struct MeshLabels {
   ScopedVertexAttribute<MeshType, VertexLabel> vertex;
   /// Outcome for inserted vertices; Placement::Original for the others.
   ScopedVertexAttribute<MeshType, Placement> placement;
+  /// Inserted vertices placed although a flank bends away before their
+  /// target (auto method, placement.h: veto::flankBendsAway): they move only
+  /// with a feature whose evidence is strong, and count as refused in it.
+  ScopedVertexAttribute<MeshType, char> bentFlank;
 
   /// Sets the label of edge i of f and of its twin on the adjacent face.
   void setEdge(typename MeshType::FaceType *f, int i, EdgeLabel label) {
