@@ -25,7 +25,7 @@ packages=(
   python3-matplotlib
   pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest python3-venv
   python3-setuptools blender
-  libopenvdb-dev python3-open3d
+  libopenvdb-dev python3-open3d python3-skimage
   clang libclang-rt-14-dev
 )
 

@@ -82,6 +82,11 @@ NOTES = """What it found (diagnosed by hand):
   "most refused" feature bound), then with them: the same verdicts; twirl at 0.5% max 0.548%
   -> 0.603% (its input 0.598%: a max on its curved blades, not worse by the rule), block at
   0.5% RMS 0.00547% -> 0.00543%, nothing else changed.
+- The bend rule of 2026-11-27 (a vertex whose flank bends away moves within one sample spacing
+  with a feature that is sharpened; `--bent-move`, chosen on the benchmark's tuning half):
+  the same verdicts; finished_hexprism at 1% RMS 0.0428% -> 0.0473% (its designed fillets;
+  already worse, max unchanged), twirl at 0.5% max 0.603% -> 0.532%, block in Smooth mode
+  0.75% -> 0.542%, a few RMS figures in the third digit.
 """
 # Run by Blender: blender -b --python-expr IN_BLENDER -- IN.npz OUT.npz voxel SIZE
 #                                                      -- IN.npz OUT.npz smooth DEPTH
@@ -199,14 +204,9 @@ def main():
     heldout.require_open3d("blender_remesh")
     if not os.path.exists(BLENDER):
         sys.exit(f"blender_remesh: {BLENDER} (Debian blender) is not installed")
-    work = os.path.join(args.build, "heldout-blender")
-    os.makedirs(work, exist_ok=True)
-    refs, half = heldout.held_out_references(args), heldout.halves()
-    text = "\n\n".join(table(s, refs, half, work, args) for s in SAMPLERS)
-    print(text)
-    if args.out:
-        heldout.write_markdown(args, "Held-out check: Blender's remeshers", "blender_remesh.py", 4,
-                               MADE + "\n\n" + text + "\n\n" + NOTES)
+    heldout.run_samplers(args, SAMPLERS, table, os.path.join(args.build, "heldout-blender"),
+                         "Held-out check: Blender's remeshers", "blender_remesh.py", 4, MADE,
+                         NOTES)
 
 
 if __name__ == "__main__":

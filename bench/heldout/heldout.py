@@ -115,3 +115,14 @@ def write_markdown(args, heading, script, minutes, body):
                 "was fitted to it. Distances in % of the reference's diagonal (mesh-distance "
                 "--sampling meshlab); **worse** = max up by more than 2% or RMS by more than "
                 "1%.\n\n" + body)
+
+
+def run_samplers(args, samplers, table, work, heading, script, minutes, made, notes):
+    """Each sampler's table, table(sampler, refs, half, work, args) with its meshes in `work`,
+    printed and, with --out, written between `made` (how the inputs were made) and `notes`."""
+    os.makedirs(work, exist_ok=True)
+    refs, half = held_out_references(args), halves()
+    text = "\n\n".join(table(s, refs, half, work, args) for s in samplers)
+    print(text)
+    if args.out:
+        write_markdown(args, heading, script, minutes, made + "\n\n" + text + "\n\n" + notes)
