@@ -71,6 +71,22 @@ def require_factor(case, before, after, quantity, bound, failures):
                         f"x{before[quantity] / after[quantity]:.2f} < x{bound}")
 
 
+def check_min_factors(min_factors, resolution, passed, multiplier=2.0, width=24):
+    """The whole check of a results JSON with one input per model of `min_factors`, all at
+    `resolution`: each made, sharpened by the default method and measured, none worse, and its
+    max and RMS reduction factors at least min_factors[model] = (max, RMS). Exits like
+    finish()."""
+    failures = []
+    outcomes = default_method_outcomes(load_results()["cases"], failures, multiplier, width)
+    for c, before, after in outcomes:
+        min_max, min_rms = min_factors[c["model"]]
+        require_factor(c, before, after, "max", min_max, failures)
+        require_factor(c, before, after, "rms", min_rms, failures)
+    require_measured(outcomes, ("model", "resolution"),
+                     {(model, resolution) for model in min_factors}, failures)
+    finish(failures, passed)
+
+
 def require_measured(outcomes, fields, expected, failures):
     """Appends a failure unless the cases of `outcomes` (default_method_outcomes), each keyed by
     the tuple of its `fields`, are exactly the set `expected`: no input may go missing."""
