@@ -295,9 +295,9 @@ inline const std::vector<OptionSpec> &optionTable() {
        "Auto method: a new vertex the bend test (--bend-fraction) would keep at rest moves, "
        "when its move is at most this long and nothing else refuses it, with its feature if "
        "the feature's evidence is strong; it counts as refused in that evidence (a sampler "
-       "rounds a sharp edge most near its corners, by about one sample spacing; 0: the bend "
-       "keeps it at rest, as in the extended method).",
-       T::Real, G::EvidenceGuard, "sample spacings", 0, 100, false, kNotInMeshLab, {}, {},
+       "rounds a sharp edge most near its corners, by about one median edge length; 0: the "
+       "bend keeps it at rest, as in the extended method).",
+       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
        ES_REAL(maxBentMoveSpacings)},
       {"max_feature_off_plane_spacings", "--feature-off-plane", "", "Feature off-plane distance",
        "Auto method: a feature stays as it was when one of its vertices lies farther than this "
