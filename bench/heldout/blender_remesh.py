@@ -127,14 +127,6 @@ np.savez(dst, vertices=vertices.reshape(-1, 3), triangles=triangles.reshape(-1, 
 """
 
 
-def load(reference):
-    """The reference as Open3D reads it, duplicated vertices merged (STL repeats them)."""
-    import open3d as o3d
-    mesh = o3d.io.read_triangle_mesh(reference)
-    mesh.remove_duplicated_vertices()
-    return mesh
-
-
 def diagonal(mesh):
     return float((mesh.get_axis_aligned_bounding_box().get_extent() ** 2).sum() ** 0.5)
 
@@ -180,7 +172,7 @@ def table(sampler, refs, half, work, args):
     key, mode, fraction, title = sampler
     cells, rows = [], []
     for name, ref in sorted(refs.items()):
-        mesh = load(ref)
+        mesh = heldout.load_reference(ref)
         value, size = parameter(mesh, mode, fraction)
         cells.append(size)
         rows.append((name, ref, mesh, value, size))

@@ -38,6 +38,14 @@ def require_open3d(script):
         sys.exit(f"{script}: Open3D (Debian python3-open3d) is not installed")
 
 
+def load_reference(reference):
+    """The reference as Open3D reads it, duplicated vertices merged (STL repeats them)."""
+    import open3d as o3d
+    mesh = o3d.io.read_triangle_mesh(reference)
+    mesh.remove_duplicated_vertices()
+    return mesh
+
+
 def held_out_references(args):
     """Name -> reference path: the generated shapes the quality benchmark wrote, test_meshes/real
     and ../shared/meshes; chamfer-cube left out (its reference is another shape)."""

@@ -116,14 +116,6 @@ NOTES = """What it found (diagnosed by hand):
 """
 
 
-def load(reference):
-    """The reference as Open3D reads it, duplicated vertices merged (STL repeats them)."""
-    import open3d as o3d
-    mesh = o3d.io.read_triangle_mesh(reference)
-    mesh.remove_duplicated_vertices()
-    return mesh
-
-
 def inside(triangles, origin, voxel, shape):
     """Which grid points lie inside the closed surface `triangles` (F x 3 x 3, world): along each
     axis, the parity of the crossings of the grid's lines with the triangles before each point;
@@ -207,7 +199,7 @@ def table(sampler, refs, half, work, args):
     for name, ref in sorted(refs.items()):
         made = os.path.join(work, f"{name}__{key}.ply")
         if not os.path.exists(made):
-            sample(load(ref), made, fraction)
+            sample(heldout.load_reference(ref), made, fraction)
         table.measure(name, half.get(name, "?"), made, ref)
     return table.text()
 
