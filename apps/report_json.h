@@ -86,6 +86,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"corridors", r.extended.corridors},
                      {"opened_contacts", r.extended.openedContacts},
                      {"kept_facets", r.extended.keptFacets},
+                     {"planar_regions", r.extended.planarRegions},
                      {"opened_creases", r.extended.openedCreases},
                      {"zone_faces", r.extended.zoneFaces},
                      {"zone_vertices", r.extended.zoneVertices},

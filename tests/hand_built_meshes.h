@@ -9,6 +9,7 @@
 #include <vcg/simplex/face/pos.h>
 #include <vcg/simplex/face/topology.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <set>
@@ -173,6 +174,24 @@ void heightField(MeshType &m, int nx, int ny, double h, Height &&height) {
       triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
     }
   makeMesh(m, points, triangles);
+}
+
+/// Per face of `m`: region 0 when all its vertices lie at x <= x0, region 1
+/// when all lie at x >= x1, else the zone (kZone): two regions of a height
+/// field on either side of a feature zone across x.
+template <class MeshType>
+std::vector<int> regionsAcrossX(const MeshType &m, double x0, double x1, int zone) {
+  std::vector<int> region(m.face.size(), zone);
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    double lo = 1e9, hi = -1e9;
+    for (int k = 0; k < 3; ++k) {
+      lo = std::min(lo, double(m.face[f].cP(k)[0]));
+      hi = std::max(hi, double(m.face[f].cP(k)[0]));
+    }
+    if (hi <= x0 + 1e-6) region[f] = 0;
+    if (lo >= x1 - 1e-6) region[f] = 1;
+  }
+  return region;
 }
 
 /// Makes `m` the closed surface of a set of unit voxels (cells given by their lowest

@@ -212,16 +212,7 @@ struct TwoPlanes {
   TwoPlanes() {
     es::hand_built::heightField(m, kNx, kNy, kH,
                                 [](double x, double) { return x <= kEdgeX ? 0.0 : kEdgeX - x; });
-    zones.faceRegion.assign(m.face.size(), es::kZone);
-    for (std::size_t f = 0; f < m.face.size(); ++f) {
-      double lo = 1e9, hi = -1e9;
-      for (int k = 0; k < 3; ++k) {
-        lo = std::min(lo, double(m.face[f].cP(k)[0]));
-        hi = std::max(hi, double(m.face[f].cP(k)[0]));
-      }
-      if (hi <= 0.8 + 1e-6) zones.faceRegion[f] = 0;
-      if (lo >= 1.3 - 1e-6) zones.faceRegion[f] = 1;
-    }
+    zones.faceRegion = es::hand_built::regionsAcrossX(m, 0.8, 1.3, es::kZone);
   }
   static int column(std::size_t v) { return int(v % (kNx + 1)); }
 };

@@ -164,6 +164,12 @@ inline const std::vector<OptionSpec> &optionTable() {
        "cylinder), not a smooth piece of a chamfer (0: such regions open too).",
        T::Real, G::ExtendedTuning, "sample spacings", 0, 1e6, false, kNotInMeshLab, {}, {},
        ES_REAL(minFacetLengthSpacings)},
+      {"region_planes", "--local-planes-only", "", "Planar regions' own planes",
+       "Place a feature's new vertices on its flanks' own planes where their regions are planes "
+       "away from their features (fitted over their cores) and no third region is near: a "
+       "reconstruction rounds the planes fitted next to the feature.",
+       T::Flag, G::ExtendedTuning, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_FLAG(regionPlanes)},
       {"open_internal_creases", "--keep-internal-creases", "", "Open internal creases",
        "Return to the feature zone the region faces around internal creases (a non-smooth edge "
        "inside one region).",

@@ -64,6 +64,10 @@ struct SharpenOptions {
   /// interior vertex and that spans at least this many sample spacings (a
   /// narrow facet of a coarse cylinder). 0: such regions open too.
   double minFacetLengthSpacings = 10.0;
+  /// Place a feature's new vertices on its flanks' regions' own planes where
+  /// those regions are planes away from their features and no other region
+  /// is near (planar_regions.h; placement.h: detail::onRegionPlanes).
+  bool regionPlanes = true;
   /// Return to the zone the region faces around internal creases (a
   /// non-smooth edge inside one region: feature_zones.h: openInternalCreases).
   bool openInternalCreases = true;

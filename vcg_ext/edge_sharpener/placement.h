@@ -85,6 +85,9 @@ struct SupportPlanes {
   /// kNoVertex pads). Empty for the paper's method.
   static constexpr std::uint32_t kNoVertex = ~std::uint32_t(0);
   std::vector<std::array<std::uint32_t, 3>> nearby;
+  /// Extended method: per region, its own plane where it is one
+  /// (planarRegionPlanes; zero normal: not a plane). Empty: none.
+  std::vector<Plane> regionPlanes;
   /// Extended method: the input's sample spacing (median edge length);
   /// 0 for the paper's method.
   double sampleSpacing = 0;
@@ -257,6 +260,40 @@ inline Placement paperPlacement(const InsertedVertexSource &src, const Plane *pl
   return Placement::Moved;
 }
 
+namespace detail {
+
+/// Moves `target`, the placement between the planes fitted next to the
+/// feature, onto the sources' regions' own planes (SupportPlanes::
+/// regionPlanes) where every source's region is a plane, no other region
+/// lies near a source (at a corner the fits next to it see the third face)
+/// and the placement between those planes lies within one sample spacing of
+/// `target` (the vetoes judged the move from there).
+inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes &support,
+                           const SharpenOptions &opt, Vec3 &target) {
+  if (support.regionPlanes.empty()) return;
+  Plane own[3];
+  for (int i = 0; i < src.originalCount; ++i) {
+    const std::size_t v = src.original[i];
+    const int r = support.region[v];
+    if (r < 0 || std::size_t(r) >= support.regionPlanes.size()) return;
+    own[i] = support.regionPlanes[r];
+    if (own[i].normal.SquaredNorm() == 0) return;
+    for (const std::uint32_t u : support.nearby[v]) {
+      if (u == SupportPlanes::kNoVertex) break;
+      bool flank = false;
+      for (int j = 0; j < src.originalCount; ++j)
+        flank |= support.region[u] == support.region[src.original[j]];
+      if (!flank) return;
+    }
+  }
+  Vec3 onOwn;
+  if (paperPlacement(src, own, opt, onOwn) == Placement::Moved &&
+      (onOwn - target).Norm() <= support.sampleSpacing)
+    target = onOwn;
+}
+
+}  // namespace detail
+
 /// The extended method's vetoes: each is a named test that keeps an inserted
 /// vertex at rest and says why, or lets it move (std::nullopt). A veto whose
 /// measures the support planes do not carry lets it move.
@@ -367,7 +404,10 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
     if (veto::Verdict v = veto::regionsTurnLikeABlend(src, planes, support, opt)) return *v;
   const Placement paper = paperPlacement(src, planes, opt, target);
   if (!extended || paper != Placement::Moved) return paper;
-  return veto::anyAtTarget(src, planes, support, opt, target, bent).value_or(Placement::Moved);
+  const Placement verdict =
+      veto::anyAtTarget(src, planes, support, opt, target, bent).value_or(Placement::Moved);
+  if (verdict == Placement::Moved) detail::onRegionPlanes(src, support, opt, target);
+  return verdict;
 }
 
 /// Edge-length check (paper, Figure 7): an inserted vertex may not create an

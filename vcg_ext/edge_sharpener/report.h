@@ -113,6 +113,7 @@ struct ExtendedStats {
   std::size_t corridors = 0;             ///< thin smooth regions returned to the zone
   std::size_t openedContacts = 0;        ///< region faces returned to the zone at region contacts
   std::size_t keptFacets = 0;            ///< narrow facets kept whole at region contacts
+  std::size_t planarRegions = 0;         ///< regions that are planes (their own plane placed)
   std::size_t openedCreases = 0;         ///< region faces returned to the zone at internal creases
   std::size_t zoneFaces = 0;             ///< faces outside every region
   std::size_t zoneVertices = 0;          ///< vertices outside every region
@@ -158,10 +159,11 @@ inline void formatDetection(std::ostream &s, const SharpenReport &r) {
 
 inline void formatFeatureZones(std::ostream &s, const SharpenReport &r) {
   const ExtendedStats &e = r.extended;
-  s << "feature zones: " << e.regions << " smooth regions (" << e.corridors
-    << " corridors dissolved), " << e.zoneFaces << " zone faces (" << e.openedContacts
-    << " opened at region contacts (" << e.keptFacets << " narrow facets kept), " << e.openedCreases
-    << " at internal creases), " << e.labelledZoneVertices << " of " << e.zoneVertices
+  s << "feature zones: " << e.regions << " smooth regions (" << e.planarRegions << " planes, "
+    << e.corridors << " corridors dissolved), " << e.zoneFaces << " zone faces ("
+    << e.openedContacts << " opened at region contacts (" << e.keptFacets
+    << " narrow facets kept), " << e.openedCreases << " at internal creases), "
+    << e.labelledZoneVertices << " of " << e.zoneVertices
     << " zone vertices labelled, sample spacing " << e.sampleSpacing;
   if (r.geometryChanged)
     s << ", " << e.projectedVertices << " projected onto their region (max " << e.maxProjection

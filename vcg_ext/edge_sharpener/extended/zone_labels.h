@@ -13,6 +13,7 @@
 #include "../report.h"
 #include "../util/mesh_labels.h"
 #include "../util/parallel.h"
+#include "planar_regions.h"
 #include "plane_fit.h"
 #include "zones.h"
 
@@ -248,6 +249,12 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
   }
   stats.zoneVertices += zone.size();
   detail::fitPlanesAtZone(m, vf, fitted, PlaneFitSettings::from(opt), zones);
+  if (opt.regionPlanes) {
+    zones.support.regionPlanes =
+        planarRegionPlanes(m, vf, zones, touchesZone, zones.support.sampleSpacing, {});
+    for (const Plane &p : zones.support.regionPlanes)
+      stats.planarRegions += p.normal.SquaredNorm() > 0;
+  }
   const detail::ZoneCandidates cand = detail::offerRegions(m, vf, opt, zones, fitted, zone);
   detail::labelByNearestPlane(m, zone, cand, zones, stats);
   collectNearbyRegions(m, vf, zones, opt.supportRings);

@@ -1,0 +1,166 @@
+// Planar regions (extended/planar_regions.h) and placement on their own
+// planes (placement.h: detail::onRegionPlanes).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "edge_sharpener/edge_sharpener.h"
+#include "edge_sharpener/extended/zone_labels.h"
+#include "edge_sharpener/placement.h"
+#include "hand_built_meshes.h"
+
+namespace es = edge_sharpener;
+using es::Vec3;
+
+TEST(PlanarRegions, PrincipalAxesFollowTheLongerExtent) {
+  const auto basis = es::detail::inPlaneBasis(Vec3(0, 0, 1));
+  EXPECT_NEAR(basis[0] * basis[1], 0, 1e-12);
+  EXPECT_NEAR(basis[0] * Vec3(0, 0, 1), 0, 1e-12);
+  EXPECT_NEAR(basis[1].Norm(), 1, 1e-12);
+  // Points along the line at 30 degrees to basis[0], spread 10:1 across it.
+  const double a = 30 * M_PI / 180;
+  const Vec3 along = basis[0] * std::cos(a) + basis[1] * std::sin(a);
+  const Vec3 across = basis[0] * -std::sin(a) + basis[1] * std::cos(a);
+  double xx = 0, xy = 0, yy = 0;
+  for (int i = -10; i <= 10; ++i)
+    for (int j = -1; j <= 1; ++j) {
+      const Vec3 p = along * double(i) + across * double(j);
+      const double x = p * basis[0], y = p * basis[1];
+      xx += x * x, xy += x * y, yy += y * y;
+    }
+  const auto axes = es::detail::principalAxes(basis, xx, xy, yy);
+  EXPECT_NEAR(std::abs(axes[0] * along), 1, 1e-9);
+  EXPECT_NEAR(std::abs(axes[1] * across), 1, 1e-9);
+}
+
+namespace {
+
+// A height field with a sharp edge at x = kEdgeX: flat (z = 0) before it
+// and, after it, a slope of 45 degrees that `bend` curves (z'' = -bend).
+// Region 0: faces with x <= kEdgeX - 0.35, region 1: x >= kEdgeX + 0.15;
+// the zone between.
+constexpr int kNx = 40, kNy = 16;
+constexpr double kH = 0.1, kEdgeX = 2.03;
+
+struct EdgeField {
+  es::Mesh m;
+  es::FeatureZones zones;
+  es::ExtendedStats stats;
+
+  explicit EdgeField(double bend) {
+    es::hand_built::heightField(m, kNx, kNy, kH, [bend](double x, double) {
+      const double t = x - kEdgeX;
+      return t <= 0 ? 0.0 : -t - 0.5 * bend * t * t;
+    });
+    zones.faceRegion = es::hand_built::regionsAcrossX(m, kEdgeX - 0.35, kEdgeX + 0.15, es::kZone);
+    const es::VertexFaceTable vf(m);
+    es::SharpenOptions opt;
+    opt.method = es::Method::Extended;
+    zones.support.sampleSpacing = kH;
+    es::labelZoneVertices(m, vf, opt, zones, stats);
+  }
+  bool planar(int r) const { return zones.support.regionPlanes.at(r).normal.SquaredNorm() > 0; }
+};
+
+}  // namespace
+
+TEST(PlanarRegions, TwoFlatRegionsAreTheirOwnPlanes) {
+  EdgeField t(0.0);
+  ASSERT_EQ(t.zones.support.regionPlanes.size(), 2u);
+  EXPECT_EQ(t.stats.planarRegions, 2u);
+  const es::Plane &flat = t.zones.support.regionPlanes[0], &slope = t.zones.support.regionPlanes[1];
+  EXPECT_LT(es::angleBetween(flat.normal, Vec3(0, 0, 1)), 1e-6);
+  EXPECT_LT(es::angleBetween(slope.normal, Vec3(1, 0, 1) / std::sqrt(2.0)), 1e-6);
+  EXPECT_NEAR(flat.normal * flat.point, 0, 1e-6);
+  EXPECT_NEAR(slope.normal * (slope.point - Vec3(kEdgeX, 0, 0)), 0, 1e-6);
+}
+
+// The slope turns by about 20 degrees over its 1.9 units: its core's halves
+// turn by far more than the bound, and it is no plane; the flat side is one.
+TEST(PlanarRegions, ACurvedRegionIsNotAPlane) {
+  EdgeField t(0.2);
+  EXPECT_TRUE(t.planar(0));
+  EXPECT_FALSE(t.planar(1));
+  EXPECT_EQ(t.stats.planarRegions, 1u);
+}
+
+// A sharp cube of 12 x 12 quads a side: each side's core holds the faces
+// 3 hops inside it.
+TEST(PlanarRegions, ACubesSidesArePlanesUnlessTheOptionIsOff) {
+  for (const bool on : {true, false}) {
+    SCOPED_TRACE(on);
+    es::Mesh m;
+    es::hand_built::voxelSurface(m, {{0, 0, 0}}, 12);
+    es::SharpenOptions opt;
+    opt.regionPlanes = on;
+    const es::SharpenReport r = es::sharpen(m, opt);
+    EXPECT_EQ(r.extended.planarRegions, on ? 6u : 0u);
+  }
+}
+
+namespace {
+
+// Two sources on the planes z = 0 (region 0) and x = 0 (region 1), whose
+// fits next to the feature tilt by `tilt` radians towards each other.
+struct TwoSources {
+  es::SupportPlanes support;
+  es::InsertedVertexSource src;
+  es::SharpenOptions opt;
+
+  TwoSources(double tilt, double spacing) {
+    support.reset(3);
+    support.sampleSpacing = spacing;
+    support.region = {0, 1, 2};
+    support.nearby.assign(3, {es::SupportPlanes::kNoVertex, es::SupportPlanes::kNoVertex,
+                              es::SupportPlanes::kNoVertex});
+    support.setFit(0,
+                   es::SupportFit::of({Vec3(0.05, 0, 0), Vec3(std::sin(tilt), 0, std::cos(tilt))}));
+    support.setFit(1,
+                   es::SupportFit::of({Vec3(0, 0, 0.05), Vec3(std::cos(tilt), 0, std::sin(tilt))}));
+    support.setFit(2, es::SupportFit::of({Vec3(0, 0, 0.5), Vec3(0, 0, 1)}));
+    support.regionPlanes = {es::Plane{Vec3(1, 0, 0), Vec3(0, 0, 1)},
+                            es::Plane{Vec3(0, 0, 1), Vec3(1, 0, 0)},
+                            es::Plane{Vec3(0, 0, 0.5), Vec3(0, 0, 1)}};
+    src.original = {0, 1, 0};
+    src.originalCount = 2;
+    src.rest = Vec3(0.03, 0.2, 0.03);
+    opt.method = es::Method::Auto;
+  }
+  /// Where placement puts the vertex: between the fits, then onRegionPlanes.
+  Vec3 placed() const {
+    const es::Plane fits[2] = {support.plane(0), support.plane(1)};
+    Vec3 target;
+    EXPECT_EQ(es::paperPlacement(src, fits, opt, target), es::Placement::Moved);
+    es::detail::onRegionPlanes(src, support, opt, target);
+    return target;
+  }
+};
+
+const Vec3 kOnOwnPlanes(0, 0.2, 0);
+
+}  // namespace
+
+// The fits meet about 0.0034 from the own planes' line.
+TEST(OnRegionPlanes, TheTargetMovesOntoTheRegionsOwnPlanes) {
+  EXPECT_LT((TwoSources(0.05, 0.1).placed() - kOnOwnPlanes).Norm(), 1e-9);
+}
+
+TEST(OnRegionPlanes, NotNearAThirdRegion) {
+  TwoSources t(0.05, 0.1);
+  t.support.nearby[0][0] = 2;  // region 2 lies near source 0: a corner
+  EXPECT_GT((t.placed() - kOnOwnPlanes).Norm(), 1e-3);
+}
+
+TEST(OnRegionPlanes, NotWhereARegionIsNoPlane) {
+  TwoSources t(0.05, 0.1);
+  t.support.regionPlanes[1] = es::Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)};
+  EXPECT_GT((t.placed() - kOnOwnPlanes).Norm(), 1e-3);
+}
+
+// With a sample spacing of 0.002 the fits meet farther than one spacing
+// from the own planes' line: the vetoes judged the move from there, so it
+// stays.
+TEST(OnRegionPlanes, NotFartherThanOneSampleSpacing) {
+  TwoSources t(0.05, 0.002);
+  EXPECT_GT((t.placed() - kOnOwnPlanes).Norm(), t.support.sampleSpacing);
+}

@@ -1,0 +1,165 @@
+// Extended method: the regions that are planes. Placement fits a region's
+// plane next to the feature (fitRegionPlane: two face rings of a border
+// vertex), where a reconstruction (Screened Poisson, a scan's fusion) rounds
+// the region into the feature. A region that is a plane away from its
+// features, in its core, gives placement that plane instead
+// (placement.h: detail::onRegionPlanes).
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "../util/geometry.h"
+#include "../util/vertex_faces.h"
+#include "zones.h"
+
+namespace edge_sharpener {
+
+/// When a region counts as a plane (planarRegionPlanes).
+struct PlanarRegionSettings {
+  /// The core: the region's faces whose vertices all lie at least this many
+  /// hops from the feature zone (beyond the rounding of a reconstruction).
+  int coreHops = 3;
+  /// A core of fewer faces tells nothing.
+  int minCoreFaces = 20;
+  /// The core's faces' centroids lie within this RMS distance of its plane
+  /// (noise; in sample spacings)...
+  double maxRmsSpacings = 0.25;
+  /// ...and the mean normals of its two halves, split across either
+  /// principal axis of its extent, turn by at most this angle (a curved
+  /// region bends; noise averages out).
+  double maxBendRad = 3.0 * M_PI / 180.0;
+};
+
+namespace detail {
+
+/// An orthonormal pair spanning the plane of unit normal n.
+inline std::array<Vec3, 2> inPlaneBasis(const Vec3 &n) {
+  Vec3 u = std::abs(n[0]) < 0.9 ? Vec3(1, 0, 0) ^ n : Vec3(0, 1, 0) ^ n;
+  u.Normalize();
+  return {u, n ^ u};
+}
+
+/// The principal axes of a point set's spread in a plane: the eigenvectors
+/// of its second moments (xx, xy, yy) in the basis `b`, major axis first.
+inline std::array<Vec3, 2> principalAxes(const std::array<Vec3, 2> &b, double xx, double xy,
+                                         double yy) {
+  const double angle = 0.5 * std::atan2(2 * xy, xx - yy);
+  const Vec3 major = b[0] * std::cos(angle) + b[1] * std::sin(angle);
+  const Vec3 minor = b[0] * -std::sin(angle) + b[1] * std::cos(angle);
+  return {major, minor};
+}
+
+/// Hops from the feature zone (vertices touching a zone face, or of no
+/// single region) through region vertices, capped at `cap`.
+template <class MeshType>
+std::vector<int> hopsFromZone(const MeshType &m, const VertexFaceTable &vf,
+                              const FeatureZones &zones, const std::vector<char> &touchesZone,
+                              int cap) {
+  const std::size_t nv = m.vert.size();
+  std::vector<int> hops(nv, cap);
+  std::deque<std::uint32_t> queue;
+  for (std::size_t v = 0; v < nv; ++v)
+    if (touchesZone[v] || zones.vertexLabel[v] < 0) {
+      hops[v] = 0;
+      queue.push_back(std::uint32_t(v));
+    }
+  while (!queue.empty()) {
+    const std::uint32_t v = queue.front();
+    queue.pop_front();
+    if (hops[v] + 1 >= cap) continue;
+    forEachNeighbour(m, vf, v, [&](std::size_t u) {
+      if (hops[u] > hops[v] + 1) {
+        hops[u] = hops[v] + 1;
+        queue.push_back(std::uint32_t(u));
+      }
+    });
+  }
+  return hops;
+}
+
+/// One region's core, accumulated face by face (area-weighted).
+struct CoreMoments {
+  int faces = 0;
+  double area = 0;
+  Vec3 normalSum{0, 0, 0}, centroidSum{0, 0, 0};
+  double distance2 = 0, xx = 0, xy = 0, yy = 0;  // about the plane, in its basis
+  std::array<Vec3, 4> halfNormals{Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(0, 0, 0)};
+};
+
+}  // namespace detail
+
+/// Per region: its plane when the region is one (PlanarRegionSettings), else
+/// a zero normal. `touchesZone`: per vertex, whether a zone face is among its
+/// faces; `spacing`: the sample spacing. Serial sums in face order (the same
+/// planes for any thread count).
+template <class MeshType>
+std::vector<Plane> planarRegionPlanes(const MeshType &m, const VertexFaceTable &vf,
+                                      const FeatureZones &zones,
+                                      const std::vector<char> &touchesZone, double spacing,
+                                      const PlanarRegionSettings &s) {
+  int regions = 0;
+  for (const int r : zones.faceRegion) regions = std::max(regions, r + 1);
+  const Plane none{Vec3(0, 0, 0), Vec3(0, 0, 0)};
+  std::vector<Plane> plane(regions, none);
+  if (regions == 0 || !(spacing > 0)) return plane;
+  const std::vector<int> hops = detail::hopsFromZone(m, vf, zones, touchesZone, s.coreHops);
+  std::vector<detail::CoreMoments> core(regions);
+  std::vector<std::array<Vec3, 2>> basis(regions), axes(regions);
+  // Three passes over the core faces: the plane; the distances and the
+  // extent's moments about it; the normals of the halves.
+  const auto forEachCoreFace = [&](auto &&visit) {
+    for (std::size_t fi = 0; fi < m.face.size(); ++fi) {
+      const int r = zones.faceRegion[fi];
+      const auto &f = m.face[fi];
+      if (r < 0 || f.IsD()) continue;
+      bool inCore = true;
+      for (int k = 0; k < 3; ++k) inCore &= hops[vcg::tri::Index(m, f.cV(k))] >= s.coreHops;
+      if (!inCore) continue;
+      const Vec3 p0 = positionOf(f.cV(0)), p1 = positionOf(f.cV(1)), p2 = positionOf(f.cV(2));
+      visit(core[r], plane[r], r, (p1 - p0) ^ (p2 - p0), (p0 + p1 + p2) / 3.0);
+    }
+  };
+  forEachCoreFace([](detail::CoreMoments &c, const Plane &, int, const Vec3 &n, const Vec3 &x) {
+    const double area = n.Norm();
+    ++c.faces;
+    c.area += area;
+    c.normalSum += n;
+    c.centroidSum += x * area;
+  });
+  for (int r = 0; r < regions; ++r) {
+    const detail::CoreMoments &c = core[r];
+    if (c.faces < s.minCoreFaces || !(c.area > 0) || !(c.normalSum.Norm() > 0)) continue;
+    plane[r] = Plane{c.centroidSum / c.area, c.normalSum / c.normalSum.Norm()};
+    basis[r] = detail::inPlaneBasis(plane[r].normal);
+  }
+  forEachCoreFace([&](detail::CoreMoments &c, const Plane &p, int r, const Vec3 &n, const Vec3 &x) {
+    if (p.normal.SquaredNorm() == 0) return;
+    const double area = n.Norm();
+    const Vec3 d = x - p.point;
+    const double h = d * p.normal, u = d * basis[r][0], w = d * basis[r][1];
+    c.distance2 += h * h * area;
+    c.xx += u * u * area, c.xy += u * w * area, c.yy += w * w * area;
+  });
+  for (int r = 0; r < regions; ++r)
+    if (plane[r].normal.SquaredNorm() > 0)
+      axes[r] = detail::principalAxes(basis[r], core[r].xx, core[r].xy, core[r].yy);
+  forEachCoreFace([&](detail::CoreMoments &c, const Plane &p, int r, const Vec3 &n, const Vec3 &x) {
+    if (p.normal.SquaredNorm() == 0) return;
+    for (int k = 0; k < 2; ++k) c.halfNormals[2 * k + ((x - p.point) * axes[r][k] > 0)] += n;
+  });
+  for (int r = 0; r < regions; ++r) {
+    const detail::CoreMoments &c = core[r];
+    if (plane[r].normal.SquaredNorm() == 0) continue;
+    const double rms = std::sqrt(c.distance2 / c.area);
+    const double bend = std::max(angleBetween(c.halfNormals[0], c.halfNormals[1]),
+                                 angleBetween(c.halfNormals[2], c.halfNormals[3]));
+    if (!(rms <= s.maxRmsSpacings * spacing) || !(bend <= s.maxBendRad)) plane[r] = none;
+  }
+  return plane;
+}
+
+}  // namespace edge_sharpener
