@@ -262,12 +262,18 @@ inline Placement paperPlacement(const InsertedVertexSource &src, const Plane *pl
 
 namespace detail {
 
+/// See onRegionPlanes(): in sample spacings.
+constexpr double kMinShiftSpacings = 0.1;
+
 /// Moves `target`, the placement between the planes fitted next to the
 /// feature, onto the sources' regions' own planes (SupportPlanes::
 /// regionPlanes) where every source's region is a plane, no other region
 /// lies near a source (at a corner the fits next to it see the third face)
-/// and the placement between those planes lies within one sample spacing of
-/// `target` (the vetoes judged the move from there).
+/// and the placement between those planes lies more than kMinShiftSpacings
+/// and at most one sample spacing from `target` (the vetoes judged the move
+/// from there). Closer, the fits are as good, and exact planes would make
+/// faces along a concave edge coincide exactly, which the cleanup and the
+/// intersection guard then undo.
 inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes &support,
                            const SharpenOptions &opt, Vec3 &target) {
   if (support.regionPlanes.empty()) return;
@@ -288,7 +294,8 @@ inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes 
   }
   Vec3 onOwn;
   if (paperPlacement(src, own, opt, onOwn) == Placement::Moved &&
-      (onOwn - target).Norm() <= support.sampleSpacing)
+      (onOwn - target).Norm() <= support.sampleSpacing &&
+      (onOwn - target).Norm() > kMinShiftSpacings * support.sampleSpacing)
     target = onOwn;
 }
 
