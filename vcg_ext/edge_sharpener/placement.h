@@ -191,6 +191,26 @@ inline bool cornerPairBendsAway(const InsertedVertexSource &src, const Plane *pl
   return false;
 }
 
+/// Whether `found(u)` holds for a vertex u that the sources list nearby
+/// (SupportPlanes::nearby) and whose region is none of the sources' own
+/// (a third region: an intermediate facet, a corner's third face).
+template <class Found>
+bool anyNearbyThirdRegion(const InsertedVertexSource &src, const SupportPlanes &support,
+                          Found &&found) {
+  const int n = src.originalCount;
+  const auto isFlank = [&](int region) {
+    for (int i = 0; i < n; ++i)
+      if (support.region[src.original[i]] == region) return true;
+    return false;
+  };
+  for (int i = 0; i < n; ++i)
+    for (std::uint32_t u : support.nearby[src.original[i]]) {
+      if (u == SupportPlanes::kNoVertex) break;
+      if (!isFlank(support.region[u]) && found(u)) return true;
+    }
+  return false;
+}
+
 /// Whether `target` passes, by more than opt.intermediatePlaneTolerance x the
 /// vertex's displacement, through the plane of a region found near the
 /// sources whose normal lies between two flanks' (a facet of a coarse curve,
@@ -202,23 +222,14 @@ inline bool passesIntermediateRegion(const InsertedVertexSource &src, const Plan
   const int n = src.originalCount;
   Vec3 normalSum(0, 0, 0);
   for (int i = 0; i < n; ++i) normalSum += planes[i].normal;
-  const auto isFlank = [&](int region) {
-    for (int i = 0; i < n; ++i)
-      if (support.region[src.original[i]] == region) return true;
-    return false;
-  };
-  for (int i = 0; i < n; ++i)
-    for (std::uint32_t u : support.nearby[src.original[i]]) {
-      if (u == SupportPlanes::kNoVertex) break;
-      if (isFlank(support.region[u])) continue;
-      const Plane &l = support.plane(u);
-      bool between = false;
-      for (int a = 0; a < flankPairCount(src); ++a)
-        between |= normalBetween(planes[a].normal, planes[(a + 1) % n].normal, l.normal,
-                                 opt.intermediateSlackRad);
-      if (between && passageBeyondPlane(normalSum, l, src.rest, target) > allowed) return true;
-    }
-  return false;
+  return anyNearbyThirdRegion(src, support, [&](std::uint32_t u) {
+    const Plane &l = support.plane(u);
+    bool between = false;
+    for (int a = 0; a < flankPairCount(src); ++a)
+      between |= normalBetween(planes[a].normal, planes[(a + 1) % n].normal, l.normal,
+                               opt.intermediateSlackRad);
+    return between && passageBeyondPlane(normalSum, l, src.rest, target) > allowed;
+  });
 }
 
 }  // namespace detail
@@ -279,23 +290,16 @@ inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes 
   if (support.regionPlanes.empty()) return;
   Plane own[3];
   for (int i = 0; i < src.originalCount; ++i) {
-    const std::size_t v = src.original[i];
-    const int r = support.region[v];
+    const int r = support.region[src.original[i]];
     if (r < 0 || std::size_t(r) >= support.regionPlanes.size()) return;
     own[i] = support.regionPlanes[r];
     if (own[i].normal.SquaredNorm() == 0) return;
-    for (const std::uint32_t u : support.nearby[v]) {
-      if (u == SupportPlanes::kNoVertex) break;
-      bool flank = false;
-      for (int j = 0; j < src.originalCount; ++j)
-        flank |= support.region[u] == support.region[src.original[j]];
-      if (!flank) return;
-    }
   }
+  if (anyNearbyThirdRegion(src, support, [](std::uint32_t) { return true; })) return;
   Vec3 onOwn;
-  if (paperPlacement(src, own, opt, onOwn) == Placement::Moved &&
-      (onOwn - target).Norm() <= support.sampleSpacing &&
-      (onOwn - target).Norm() > kMinShiftSpacings * support.sampleSpacing)
+  if (paperPlacement(src, own, opt, onOwn) != Placement::Moved) return;
+  const double shift = (onOwn - target).Norm();
+  if (shift > kMinShiftSpacings * support.sampleSpacing && shift <= support.sampleSpacing)
     target = onOwn;
 }
 

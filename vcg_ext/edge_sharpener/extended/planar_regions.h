@@ -109,16 +109,20 @@ std::vector<Plane> planarRegionPlanes(const MeshType &m, const VertexFaceTable &
   const std::vector<int> hops = detail::hopsFromZone(m, vf, zones, touchesZone, s.coreHops);
   std::vector<detail::CoreMoments> core(regions);
   std::vector<std::array<Vec3, 2>> basis(regions), axes(regions);
-  // Three passes over the core faces: the plane; the distances and the
-  // extent's moments about it; the normals of the halves.
+  // The core faces, in face order; then three passes over them: the plane;
+  // the distances and the extent's moments about it; the normals of the halves.
+  std::vector<std::uint32_t> coreFaces;
+  for (std::size_t fi = 0; fi < m.face.size(); ++fi) {
+    const auto &f = m.face[fi];
+    if (zones.faceRegion[fi] < 0 || f.IsD()) continue;
+    bool inCore = true;
+    for (int k = 0; k < 3; ++k) inCore &= hops[vcg::tri::Index(m, f.cV(k))] >= s.coreHops;
+    if (inCore) coreFaces.push_back(std::uint32_t(fi));
+  }
   const auto forEachCoreFace = [&](auto &&visit) {
-    for (std::size_t fi = 0; fi < m.face.size(); ++fi) {
+    for (const std::uint32_t fi : coreFaces) {
       const int r = zones.faceRegion[fi];
       const auto &f = m.face[fi];
-      if (r < 0 || f.IsD()) continue;
-      bool inCore = true;
-      for (int k = 0; k < 3; ++k) inCore &= hops[vcg::tri::Index(m, f.cV(k))] >= s.coreHops;
-      if (!inCore) continue;
       const Vec3 p0 = positionOf(f.cV(0)), p1 = positionOf(f.cV(1)), p2 = positionOf(f.cV(2));
       visit(core[r], plane[r], r, (p1 - p0) ^ (p2 - p0), (p0 + p1 + p2) / 3.0);
     }
