@@ -40,8 +40,8 @@
 #                               flank bends away near a corner move with their feature; factors
 #                               against floors, none made worse (skipped without OpenVDB).
 #   quality.region_planes       cylinder_block and lblock_tilted by Screened Poisson at depth 7:
-#                               new vertices on their planar regions' own planes; factors
-#                               against floors, none made worse.
+#                               new vertices on their planar regions' own planes, edges
+#                               stopped at corners; factors against floors, none made worse.
 # The full benchmark (docs/results.md) is scripts/bench-quality.sh, not a test.
 # All exit 77 (skipped) when MeshLab or python3 is not installed, fandisk_targets and
 # long_move also without ../shared. Run: ctest -L quality

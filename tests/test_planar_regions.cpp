@@ -145,10 +145,36 @@ TEST(OnRegionPlanes, TheTargetMovesOntoTheRegionsOwnPlanes) {
   EXPECT_LT((TwoSources(0.05, 0.02).placed() - kOnOwnPlanes).Norm(), 1e-9);
 }
 
-TEST(OnRegionPlanes, NotNearAThirdRegion) {
+// Region 2's plane (z = 0.5) lies between the flanks' (z = 0 and x = 0 at
+// z = 1): no edge of theirs ends at it.
+TEST(OnRegionPlanes, NotNearAThirdPlaneBetweenTheFlanks) {
   TwoSources t(0.05, 0.1);
-  t.support.nearby[0][0] = 2;  // region 2 lies near source 0: a corner
+  t.support.nearby[0][0] = 2;
   EXPECT_GT((t.placed() - kOnOwnPlanes).Norm(), 1e-3);
+}
+
+TEST(OnRegionPlanes, NotNearAThirdRegionThatIsNoPlane) {
+  TwoSources t(0.05, 0.02);
+  t.support.regionPlanes[2] = es::Plane{Vec3(0, 0.5, 0), Vec3(0, 0, 0)};
+  t.support.nearby[0][0] = 2;
+  EXPECT_GT((t.placed() - kOnOwnPlanes).Norm(), 1e-3);
+}
+
+// An end face y = 0.5 beyond the vertex: the line runs on to it.
+TEST(OnRegionPlanes, NearACornerBeforeTheEndFace) {
+  TwoSources t(0.05, 0.02);
+  t.support.regionPlanes[2] = es::Plane{Vec3(0, 0.5, 0), Vec3(0, 1, 0)};
+  t.support.nearby[1][0] = 2;
+  EXPECT_LT((t.placed() - kOnOwnPlanes).Norm(), 1e-9);
+}
+
+// An end face y = 0.15 short of the point nearest the vertex: the line
+// stops at the corner where the three planes meet.
+TEST(OnRegionPlanes, NearACornerTheLineStopsAtTheEndFace) {
+  TwoSources t(0.05, 0.1);
+  t.support.regionPlanes[2] = es::Plane{Vec3(0, 0.15, 0), Vec3(0, 1, 0)};
+  t.support.nearby[1][0] = 2;
+  EXPECT_LT((t.placed() - Vec3(0, 0.15, 0)).Norm(), 1e-9);
 }
 
 TEST(OnRegionPlanes, NotWhereARegionIsNoPlane) {

@@ -4,16 +4,19 @@ run.py --models cylinder_block,lblock_tilted --input-keys poisson_depth7 --varia
 
 Screened Poisson rounds a planar region where it meets a feature, which is where placement
 fits the region's plane; a region that is a plane in its core (planar_regions.h) gives
-placement its own plane, away from corners and within one sample spacing of the fitted planes'
-target (SharpenOptions::regionPlanes). Asserted (checks.check_min_factors): both inputs made,
+placement its own plane within one sample spacing of the fitted planes' target
+(SharpenOptions::regionPlanes); near a corner whose faces are all planes, an edge's line stops
+at the corner (keepBeforeEndPlane). Asserted (checks.check_min_factors): both inputs made,
 sharpened and measured, neither made worse (families.is_worse: max up > 2% or RMS up > 1%),
 and the reduction factors at least MIN_FACTORS. Measured when this test was written (max /
 RMS factors): cylinder_block x1.24 / x1.51, lblock_tilted x1.30 / x2.35; with the fitted
-planes only (`--local-planes-only`): x1.24 / x1.36 and x1.30 / x1.70.
+planes only (`--local-planes-only`): x1.24 / x1.36 and x1.30 / x1.70. With the corners
+(2026-11-27): cylinder_block x1.24 / x1.52, lblock_tilted x1.35 / x2.51; lblock_tilted's
+floors fail without them.
 """
 import checks  # first: puts bench/quality on sys.path
 
-MIN_FACTORS = {"cylinder_block": (1.18, 1.45), "lblock_tilted": (1.25, 2.2)}
+MIN_FACTORS = {"cylinder_block": (1.18, 1.45), "lblock_tilted": (1.33, 2.42)}
 
 
 def main():

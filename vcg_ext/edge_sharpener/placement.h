@@ -3,6 +3,7 @@
 // or keeps it at rest for one of the paper's degenerate cases.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -278,26 +279,47 @@ constexpr double kMinShiftSpacings = 0.1;
 
 /// Moves `target`, the placement between the planes fitted next to the
 /// feature, onto the sources' regions' own planes (SupportPlanes::
-/// regionPlanes) where every source's region is a plane, no other region
-/// lies near a source (at a corner the fits next to it see the third face)
-/// and the placement between those planes lies more than kMinShiftSpacings
-/// and at most one sample spacing from `target` (the vetoes judged the move
-/// from there). Closer, the fits are as good, and exact planes would make
-/// faces along a concave edge coincide exactly, which the cleanup and the
-/// intersection guard then undo.
+/// regionPlanes) where every source's region is a plane and the placement
+/// between those planes lies more than kMinShiftSpacings and at most one
+/// sample spacing from `target` (the vetoes judged the move from there).
+/// Closer, the fits are as good, and exact planes would make faces along a
+/// concave edge coincide exactly, which the cleanup and the intersection
+/// guard then undo. Near a corner the fits next to a source see the third
+/// face: an edge vertex takes its flanks' own line only where every other
+/// region nearby is a plane too, and stops at the corner where that line
+/// meets it (keepBeforeEndPlane); a corner vertex only where no fourth
+/// region lies nearby.
 inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes &support,
                            const SharpenOptions &opt, Vec3 &target) {
   if (support.regionPlanes.empty()) return;
+  const auto ownPlane = [&](int region) -> const Plane * {
+    if (region < 0 || std::size_t(region) >= support.regionPlanes.size()) return nullptr;
+    const Plane &p = support.regionPlanes[region];
+    return p.normal.SquaredNorm() > 0 ? &p : nullptr;
+  };
   Plane own[3];
   for (int i = 0; i < src.originalCount; ++i) {
-    const int r = support.region[src.original[i]];
-    if (r < 0 || std::size_t(r) >= support.regionPlanes.size()) return;
-    own[i] = support.regionPlanes[r];
-    if (own[i].normal.SquaredNorm() == 0) return;
+    const Plane *p = ownPlane(support.region[src.original[i]]);
+    if (!p) return;
+    own[i] = *p;
   }
-  if (anyNearbyThirdRegion(src, support, [](std::uint32_t) { return true; })) return;
+  constexpr int kMaxEnds = 6;  // three nearby regions per source
+  int ends[kMaxEnds], endCount = 0;
+  const bool blocked = anyNearbyThirdRegion(src, support, [&](std::uint32_t u) {
+    const int r = support.region[u];
+    if (src.originalCount != 2 || !ownPlane(r)) return true;
+    if (std::find(ends, ends + endCount, r) == ends + endCount) ends[endCount++] = r;
+    return false;
+  });
+  if (blocked) return;
   Vec3 onOwn;
   if (paperPlacement(src, own, opt, onOwn) != Placement::Moved) return;
+  for (int k = 0; k < endCount; ++k) {
+    const auto kept =
+        keepBeforeEndPlane(own[0], own[1], *ownPlane(ends[k]), onOwn, opt.parallelAngleRad);
+    if (!kept) return;
+    onOwn = *kept;
+  }
   const double shift = (onOwn - target).Norm();
   if (shift > kMinShiftSpacings * support.sampleSpacing && shift <= support.sampleSpacing)
     target = onOwn;

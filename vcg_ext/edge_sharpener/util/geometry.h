@@ -75,6 +75,20 @@ inline std::optional<Vec3> intersectThreePlanes(const Plane &p, const Plane &q, 
   return ((m ^ l) * dn + (l ^ n) * dm + (n ^ m) * dl) / triple;
 }
 
+/// A point `onLine` of the line where the planes P and Q meet, kept on the
+/// side of a third plane L where the points `p` of P and `q` of Q lie: the
+/// line of an edge ends at the corner where it meets the face L, and a point
+/// beyond L moves to that corner. \return the point, the corner, or nothing
+/// when `p` and `q` lie on different sides of L (or on it) or the three
+/// normals are coplanar within `parallelAngleRad`.
+inline std::optional<Vec3> keepBeforeEndPlane(const Plane &p, const Plane &q, const Plane &l,
+                                              const Vec3 &onLine, double parallelAngleRad) {
+  const double side = l.normal * (p.point - l.point);
+  if (!(side * (l.normal * (q.point - l.point)) > 0)) return std::nullopt;
+  if ((l.normal * (onLine - l.point)) * side >= 0) return onLine;
+  return intersectThreePlanes(p, q, l, parallelAngleRad);
+}
+
 /// How a chamfer edge AB sits between the planes P (through A) and Q (through B).
 enum class EdgeConvexity { Convex, Concave, Mixed, Flat };
 
