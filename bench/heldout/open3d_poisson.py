@@ -80,6 +80,12 @@ NOTES = """What it changed and found (diagnosed by hand):
   sharpened references, ADIS16480 0.371% -> 0.352% and abc6 0.248% -> 0.235% (both still
   worse), the wedge 0.536% -> 0.547%; means tuning RMS x1.85 -> x2.02, validation max x1.20 ->
   x1.21, RMS x1.81 -> x1.87.
+- Edges stopped at corners (2026-11-27, chosen on the benchmark's tuning half): near a corner
+  whose third face is a plane too, an edge's new vertices take their flanks' own planes and
+  stop where their line meets that face. Run once with it: the same verdicts; ADIS16480's max
+  0.352% -> 0.265% (still worse by its RMS, 0.0194% -> 0.0223%, its designed chamfers), lblock
+  0.125% -> 0.134%, the RMS lower or equal on every sharpened reference; means tuning max
+  x1.08 -> x1.12, RMS x2.02 -> x2.03, validation max x1.21 -> x1.20, RMS x1.87 -> x1.88.
 """
 
 

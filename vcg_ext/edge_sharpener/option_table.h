@@ -166,8 +166,8 @@ inline const std::vector<OptionSpec> &optionTable() {
        ES_REAL(minFacetLengthSpacings)},
       {"region_planes", "--local-planes-only", "", "Planar regions' own planes",
        "Place a feature's new vertices on its flanks' own planes where their regions are planes "
-       "away from their features (fitted over their cores) and no third region is near: a "
-       "reconstruction rounds the planes fitted next to the feature.",
+       "away from their features (fitted over their cores), up to a corner whose third face is "
+       "a plane too: a reconstruction rounds the planes fitted next to the feature.",
        T::Flag, G::ExtendedTuning, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_FLAG(regionPlanes)},
       {"open_internal_creases", "--keep-internal-creases", "", "Open internal creases",
