@@ -78,6 +78,9 @@ NOTES = """What it found (diagnosed by hand):
   With it: the same verdicts; validation means at voxel 1% max x2.18 -> x2.12, RMS x8.25 ->
   x8.06 (fandisk 0.302% -> 0.367%, finished_hexprism 0.559% -> 0.594%, already worse; block
   0.280% -> 0.253%).
+- Edges stopped at corners (2026-11-27, chosen on the benchmark's tuning half): run once with
+  it, the same verdicts and the same figures but one, finished_hexprism at voxel 1% (already
+  worse), RMS 0.0502% -> 0.0505%.
 - ADIS16480: the connector's pins (0.4 mm across: 0.6 and 1.2 voxels) are lost by the voxel
   remesh at both sizes and by the Smooth mode; the max, 6.3% and 3.3%, is the distance from
   them to the mesh, which no sharpener changes.

@@ -118,6 +118,13 @@ NOTES = """What it found (diagnosed by hand):
   x7.65 -> x2.65 / x7.61, finished_hexprism 0.580% -> 0.594%; 0.5% unchanged). A marching-cubes
   region of a linear distance is already exact next to its features, so the fitted planes are
   as good as the own ones there (a shift under a tenth of a spacing is left to them).
+- Edges stopped at corners (2026-11-27, chosen on the benchmark's tuning half): near a corner
+  whose third face is a plane too, an edge's new vertices take their flanks' own planes and
+  stop where their line meets that face. Run once with it: the same verdicts; at 1%
+  bevelled_block's max 0.576% -> 0.674% (its input: 0.726%; not diagnosed, it has designed
+  bevels meeting at corners), finished_hexprism RMS +1%, lblock_tilted RMS 0.00976% ->
+  0.0096%; means 1% tuning x1.67 / x3.59 -> x1.64 / x3.60, validation x2.65 / x7.61 -> x2.65 /
+  x7.60; 0.5% unchanged.
 """
 
 
