@@ -93,15 +93,17 @@ TEST(ThreePlanes, RandomPlanesMeetAtTheirCommonPoint) {
   EXPECT_GT(solved, 150);
 }
 
+// The sides x = 1 and y = 1 of the unit cube: their edge is the line x = y = 1.
+const Plane kSideX{Vec3(1, 0.5, 0.5), Vec3(1, 0, 0)};
+const Plane kSideY{Vec3(0.5, 1, 0.5), Vec3(0, 1, 0)};
+
 // The edge x = 1, y = 1 of the unit cube ends at its top face z = 1.
 TEST(EndPlane, APointBeyondTheEndFaceMovesToTheCorner) {
-  const Plane x{Vec3(1, 0.5, 0.5), Vec3(1, 0, 0)};
-  const Plane y{Vec3(0.5, 1, 0.5), Vec3(0, 1, 0)};
   const Plane top{Vec3(0.5, 0.5, 1), Vec3(0, 0, 1)};
-  const auto before = es::keepBeforeEndPlane(x, y, top, Vec3(1, 1, 0.7), 1 * kDeg);
+  const auto before = es::keepBeforeEndPlane(kSideX, kSideY, top, Vec3(1, 1, 0.7), 1 * kDeg);
   ASSERT_TRUE(before.has_value());
   EXPECT_NEAR((*before - Vec3(1, 1, 0.7)).Norm(), 0, 1e-12);
-  const auto beyond = es::keepBeforeEndPlane(x, y, top, Vec3(1, 1, 1.3), 1 * kDeg);
+  const auto beyond = es::keepBeforeEndPlane(kSideX, kSideY, top, Vec3(1, 1, 1.3), 1 * kDeg);
   ASSERT_TRUE(beyond.has_value());
   EXPECT_NEAR((*beyond - Vec3(1, 1, 1)).Norm(), 0, 1e-12);
 }
@@ -109,13 +111,11 @@ TEST(EndPlane, APointBeyondTheEndFaceMovesToTheCorner) {
 // A block standing on a plate: its vertical edge lies above the plate's top
 // face (the flanks on the side the normal points to) and ends there too.
 TEST(EndPlane, TheEdgeSideIsWhereTheFlanksLie) {
-  const Plane x{Vec3(1, 0.5, 0.5), Vec3(1, 0, 0)};
-  const Plane y{Vec3(0.5, 1, 0.5), Vec3(0, 1, 0)};
   const Plane plate{Vec3(3, 3, 0), Vec3(0, 0, 1)};
-  const auto above = es::keepBeforeEndPlane(x, y, plate, Vec3(1, 1, 0.2), 1 * kDeg);
+  const auto above = es::keepBeforeEndPlane(kSideX, kSideY, plate, Vec3(1, 1, 0.2), 1 * kDeg);
   ASSERT_TRUE(above.has_value());
   EXPECT_NEAR((*above - Vec3(1, 1, 0.2)).Norm(), 0, 1e-12);
-  const auto below = es::keepBeforeEndPlane(x, y, plate, Vec3(1, 1, -0.2), 1 * kDeg);
+  const auto below = es::keepBeforeEndPlane(kSideX, kSideY, plate, Vec3(1, 1, -0.2), 1 * kDeg);
   ASSERT_TRUE(below.has_value());
   EXPECT_NEAR((*below - Vec3(1, 1, 0)).Norm(), 0, 1e-12);
 }
@@ -123,14 +123,12 @@ TEST(EndPlane, TheEdgeSideIsWhereTheFlanksLie) {
 // A third plane with the flanks on both sides (or containing one, or
 // parallel to the line) ends no edge of theirs.
 TEST(EndPlane, OnlyWhereTheFlanksLieOnOneSide) {
-  const Plane x{Vec3(1, 0.5, 0.5), Vec3(1, 0, 0)};
-  const Plane y{Vec3(0.5, 1, 0.5), Vec3(0, 1, 0)};
   const Plane across{Vec3(0.5, 0.5, 0.5), unit(Vec3(1, -1, 0.2))};
-  EXPECT_FALSE(es::keepBeforeEndPlane(x, y, across, Vec3(1, 1, 0), 1 * kDeg));
-  const Plane throughY{Vec3(0.5, 1, 0.5), Vec3(0, 0, 1)};
-  EXPECT_FALSE(es::keepBeforeEndPlane(x, y, throughY, Vec3(1, 1, 0), 1 * kDeg));
+  EXPECT_FALSE(es::keepBeforeEndPlane(kSideX, kSideY, across, Vec3(1, 1, 0), 1 * kDeg));
+  const Plane throughY{kSideY.point, Vec3(0, 0, 1)};
+  EXPECT_FALSE(es::keepBeforeEndPlane(kSideX, kSideY, throughY, Vec3(1, 1, 0), 1 * kDeg));
   const Plane alongLine{Vec3(0, 0, 0), unit(Vec3(-1, -1, 0))};
-  const auto kept = es::keepBeforeEndPlane(x, y, alongLine, Vec3(1, 1, 5), 1 * kDeg);
+  const auto kept = es::keepBeforeEndPlane(kSideX, kSideY, alongLine, Vec3(1, 1, 5), 1 * kDeg);
   ASSERT_TRUE(kept.has_value());  // on the flanks' side: the line never crosses it
   EXPECT_NEAR((*kept - Vec3(1, 1, 5)).Norm(), 0, 1e-12);
 }

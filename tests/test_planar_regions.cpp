@@ -126,6 +126,12 @@ struct TwoSources {
     src.rest = Vec3(0.03, 0.2, 0.03);
     opt.method = es::Method::Auto;
   }
+  /// Region 2, of plane `own`, lies near source `source`.
+  TwoSources &nearThirdRegion(const es::Plane &own, int source) {
+    support.regionPlanes[2] = own;
+    support.nearby[source][0] = 2;
+    return *this;
+  }
   /// Where placement puts the vertex: between the fits, then onRegionPlanes.
   Vec3 placed() const {
     const es::Plane fits[2] = {support.plane(0), support.plane(1)};
@@ -149,31 +155,25 @@ TEST(OnRegionPlanes, TheTargetMovesOntoTheRegionsOwnPlanes) {
 // z = 1): no edge of theirs ends at it.
 TEST(OnRegionPlanes, NotNearAThirdPlaneBetweenTheFlanks) {
   TwoSources t(0.05, 0.1);
-  t.support.nearby[0][0] = 2;
+  t.support.nearby[0][0] = 2;  // its own plane, z = 0.5, as set up
   EXPECT_GT((t.placed() - kOnOwnPlanes).Norm(), 1e-3);
 }
 
 TEST(OnRegionPlanes, NotNearAThirdRegionThatIsNoPlane) {
-  TwoSources t(0.05, 0.02);
-  t.support.regionPlanes[2] = es::Plane{Vec3(0, 0.5, 0), Vec3(0, 0, 0)};
-  t.support.nearby[0][0] = 2;
+  const TwoSources t = TwoSources(0.05, 0.02).nearThirdRegion({Vec3(0, 0.5, 0), Vec3(0, 0, 0)}, 0);
   EXPECT_GT((t.placed() - kOnOwnPlanes).Norm(), 1e-3);
 }
 
 // An end face y = 0.5 beyond the vertex: the line runs on to it.
 TEST(OnRegionPlanes, NearACornerBeforeTheEndFace) {
-  TwoSources t(0.05, 0.02);
-  t.support.regionPlanes[2] = es::Plane{Vec3(0, 0.5, 0), Vec3(0, 1, 0)};
-  t.support.nearby[1][0] = 2;
+  const TwoSources t = TwoSources(0.05, 0.02).nearThirdRegion({Vec3(0, 0.5, 0), Vec3(0, 1, 0)}, 1);
   EXPECT_LT((t.placed() - kOnOwnPlanes).Norm(), 1e-9);
 }
 
 // An end face y = 0.15 short of the point nearest the vertex: the line
 // stops at the corner where the three planes meet.
 TEST(OnRegionPlanes, NearACornerTheLineStopsAtTheEndFace) {
-  TwoSources t(0.05, 0.1);
-  t.support.regionPlanes[2] = es::Plane{Vec3(0, 0.15, 0), Vec3(0, 1, 0)};
-  t.support.nearby[1][0] = 2;
+  const TwoSources t = TwoSources(0.05, 0.1).nearThirdRegion({Vec3(0, 0.15, 0), Vec3(0, 1, 0)}, 1);
   EXPECT_LT((t.placed() - Vec3(0, 0.15, 0)).Norm(), 1e-9);
 }
 

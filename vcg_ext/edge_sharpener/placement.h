@@ -303,20 +303,21 @@ inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes 
     if (!p) return;
     own[i] = *p;
   }
-  constexpr int kMaxEnds = 6;  // three nearby regions per source
-  int ends[kMaxEnds], endCount = 0;
+  // An edge vertex's two sources list up to three nearby regions each.
+  constexpr int kMaxEnds = 6;
+  const Plane *ends[kMaxEnds];
+  int endCount = 0;
   const bool blocked = anyNearbyThirdRegion(src, support, [&](std::uint32_t u) {
-    const int r = support.region[u];
-    if (src.originalCount != 2 || !ownPlane(r)) return true;
-    if (std::find(ends, ends + endCount, r) == ends + endCount) ends[endCount++] = r;
+    const Plane *end = src.originalCount == 2 ? ownPlane(support.region[u]) : nullptr;
+    if (!end) return true;
+    if (std::find(ends, ends + endCount, end) == ends + endCount) ends[endCount++] = end;
     return false;
   });
   if (blocked) return;
   Vec3 onOwn;
   if (paperPlacement(src, own, opt, onOwn) != Placement::Moved) return;
   for (int k = 0; k < endCount; ++k) {
-    const auto kept =
-        keepBeforeEndPlane(own[0], own[1], *ownPlane(ends[k]), onOwn, opt.parallelAngleRad);
+    const auto kept = keepBeforeEndPlane(own[0], own[1], *ends[k], onOwn, opt.parallelAngleRad);
     if (!kept) return;
     onOwn = *kept;
   }
