@@ -85,13 +85,26 @@ void countOutcomes(const VertexMoves<MeshType> &moves, SharpenReport &report) {
   }
 }
 
+/// vcglib's UpdateNormal::PerFaceNormalized (the same normals), on every core.
+template <class MeshType>
+void updateFaceNormals(MeshType &m) {
+  const std::int64_t nf = std::int64_t(m.face.size());
+#pragma omp parallel for schedule(static, 8192) if (nf > kParallelMin)
+  for (std::int64_t fi = 0; fi < nf; ++fi) {
+    auto &f = m.face[fi];
+    if (f.IsD()) continue;
+    f.N() = vcg::TriangleNormal(f);
+    f.N().Normalize();
+  }
+}
+
 /// Colours (inspection only), compact vectors, normals, output counts.
 template <class MeshType>
 void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
             SharpenReport &report) {
   if (opt.colorize) colorize(m, labels);
   vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
-  if (vcg::tri::HasPerFaceNormal(m)) vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(m);
+  if (vcg::tri::HasPerFaceNormal(m)) updateFaceNormals(m);
   if (vcg::tri::HasPerVertexNormal(m)) vcg::tri::UpdateNormal<MeshType>::PerVertexNormalized(m);
   report.outputVertices = m.vert.size();
   report.outputFaces = m.face.size();

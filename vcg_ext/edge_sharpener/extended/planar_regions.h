@@ -10,8 +10,10 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <utility>
 #include <vector>
 
+#include "../util/fast_topology.h"
 #include "../util/geometry.h"
 #include "../util/vertex_faces.h"
 #include "zones.h"
@@ -88,14 +90,78 @@ struct CoreMoments {
   Vec3 normalSum{0, 0, 0}, centroidSum{0, 0, 0};
   double distance2 = 0, xx = 0, xy = 0, yy = 0;  // about the plane, in its basis
   std::array<Vec3, 4> halfNormals{Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(0, 0, 0)};
+
+  CoreMoments &operator+=(const CoreMoments &o) {
+    faces += o.faces;
+    area += o.area;
+    normalSum += o.normalSum;
+    centroidSum += o.centroidSum;
+    distance2 += o.distance2;
+    xx += o.xx, xy += o.xy, yy += o.yy;
+    for (int k = 0; k < 4; ++k) halfNormals[k] += o.halfNormals[k];
+    return *this;
+  }
 };
+
+/// Adds visit(moments of r, r, face) over the core faces into `core`: fixed
+/// blocks of faces (in face order) summed on every core, each block's sums
+/// per region then added in block order (the same sums for any thread count).
+template <class Visit>
+void sumOverCoreFaces(const std::vector<std::uint32_t> &coreFaces,
+                      const std::vector<int> &faceRegion, std::vector<CoreMoments> &core,
+                      Visit &&visit) {
+  constexpr std::size_t kBlock = 16384;
+  const std::int64_t blocks = std::int64_t((coreFaces.size() + kBlock - 1) / kBlock);
+  std::vector<std::vector<std::pair<int, CoreMoments>>> partial(blocks);
+#pragma omp parallel if (blocks > 2)
+  {
+    std::vector<int> slot(core.size(), -1);  // a region's entry in the block's list
+#pragma omp for schedule(dynamic, 1)
+    for (std::int64_t b = 0; b < blocks; ++b) {
+      auto &sums = partial[b];
+      const std::size_t end = std::min(coreFaces.size(), std::size_t(b + 1) * kBlock);
+      for (std::size_t j = std::size_t(b) * kBlock; j < end; ++j) {
+        const std::uint32_t fi = coreFaces[j];
+        const int r = faceRegion[fi];
+        if (slot[r] < 0) {
+          slot[r] = int(sums.size());
+          sums.emplace_back(r, CoreMoments{});
+        }
+        visit(sums[slot[r]].second, r, fi);
+      }
+      for (const auto &entry : sums) slot[entry.first] = -1;
+    }
+  }
+  for (const auto &sums : partial)
+    for (const auto &[r, c] : sums) core[r] += c;
+}
+
+/// The region faces whose vertices all lie at least `coreHops` from the
+/// zone, in face order.
+template <class MeshType>
+std::vector<std::uint32_t> coreFaces(const MeshType &m, const FeatureZones &zones,
+                                     const std::vector<int> &hops, int coreHops) {
+  const std::int64_t nf = std::int64_t(m.face.size());
+  std::vector<char> inCore(nf, 0);
+#pragma omp parallel for schedule(static, 8192) if (nf > kParallelMin)
+  for (std::int64_t fi = 0; fi < nf; ++fi) {
+    const auto &f = m.face[fi];
+    if (zones.faceRegion[fi] < 0 || f.IsD()) continue;
+    bool deep = true;
+    for (int k = 0; k < 3; ++k) deep &= hops[vcg::tri::Index(m, f.cV(k))] >= coreHops;
+    inCore[fi] = deep;
+  }
+  std::vector<std::uint32_t> faces;
+  for (std::int64_t fi = 0; fi < nf; ++fi)
+    if (inCore[fi]) faces.push_back(std::uint32_t(fi));
+  return faces;
+}
 
 }  // namespace detail
 
 /// Per region: its plane when the region is one (PlanarRegionSettings), else
 /// a zero normal. `touchesZone`: per vertex, whether a zone face is among its
-/// faces; `spacing`: the sample spacing. Serial sums in face order (the same
-/// planes for any thread count).
+/// faces; `spacing`: the sample spacing.
 template <class MeshType>
 std::vector<Plane> planarRegionPlanes(const MeshType &m, const VertexFaceTable &vf,
                                       const FeatureZones &zones,
@@ -111,21 +177,14 @@ std::vector<Plane> planarRegionPlanes(const MeshType &m, const VertexFaceTable &
   std::vector<std::array<Vec3, 2>> basis(regions), axes(regions);
   // The core faces, in face order; then three passes over them: the plane;
   // the distances and the extent's moments about it; the normals of the halves.
-  std::vector<std::uint32_t> coreFaces;
-  for (std::size_t fi = 0; fi < m.face.size(); ++fi) {
-    const auto &f = m.face[fi];
-    if (zones.faceRegion[fi] < 0 || f.IsD()) continue;
-    bool inCore = true;
-    for (int k = 0; k < 3; ++k) inCore &= hops[vcg::tri::Index(m, f.cV(k))] >= s.coreHops;
-    if (inCore) coreFaces.push_back(std::uint32_t(fi));
-  }
+  const std::vector<std::uint32_t> coreFaces = detail::coreFaces(m, zones, hops, s.coreHops);
   const auto forEachCoreFace = [&](auto &&visit) {
-    for (const std::uint32_t fi : coreFaces) {
-      const int r = zones.faceRegion[fi];
-      const auto &f = m.face[fi];
-      const Vec3 p0 = positionOf(f.cV(0)), p1 = positionOf(f.cV(1)), p2 = positionOf(f.cV(2));
-      visit(core[r], plane[r], r, (p1 - p0) ^ (p2 - p0), (p0 + p1 + p2) / 3.0);
-    }
+    detail::sumOverCoreFaces(
+        coreFaces, zones.faceRegion, core, [&](detail::CoreMoments &c, int r, std::uint32_t fi) {
+          const auto &f = m.face[fi];
+          const Vec3 p0 = positionOf(f.cV(0)), p1 = positionOf(f.cV(1)), p2 = positionOf(f.cV(2));
+          visit(c, plane[r], r, (p1 - p0) ^ (p2 - p0), (p0 + p1 + p2) / 3.0);
+        });
   };
   forEachCoreFace([](detail::CoreMoments &c, const Plane &, int, const Vec3 &n, const Vec3 &x) {
     const double area = n.Norm();

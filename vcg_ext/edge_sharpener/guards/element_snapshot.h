@@ -27,19 +27,24 @@ namespace edge_sharpener {
 template <class MeshType>
 class ElementSnapshot {
  public:
-  ElementSnapshot(const MeshType &m, const MeshLabels<MeshType> &labels) : vn_(m.vn), fn_(m.fn) {
-    vertices_.reserve(m.vert.size());
-    for (const auto &v : m.vert) vertices_.push_back({v.cP(), v.cFlags(), labels.placement[&v]});
-    faces_.reserve(m.face.size());
-    for (const auto &f : m.face) {
-      FaceState s;
+  ElementSnapshot(const MeshType &m, const MeshLabels<MeshType> &labels)
+      : vertices_(m.vert.size()), faces_(m.face.size()), vn_(m.vn), fn_(m.fn) {
+    const std::int64_t nv = std::int64_t(m.vert.size()), nf = std::int64_t(m.face.size());
+#pragma omp parallel for schedule(static, 8192) if (nv > kParallelMin)
+    for (std::int64_t i = 0; i < nv; ++i) {
+      const auto &v = m.vert[i];
+      vertices_[i] = {v.cP(), v.cFlags(), labels.placement[&v]};
+    }
+#pragma omp parallel for schedule(static, 8192) if (nf > kParallelMin)
+    for (std::int64_t i = 0; i < nf; ++i) {
+      const auto &f = m.face[i];
+      FaceState &s = faces_[i];
       for (int k = 0; k < 3; ++k) {
         s.vertex[k] = std::uint32_t(vcg::tri::Index(m, f.cV(k)));
         s.adjacent[k] = std::uint32_t(vcg::tri::Index(m, f.cFFp(k)));
         s.adjacentEdge[k] = std::int8_t(f.cFFi(k));
       }
       s.flags = f.cFlags();
-      faces_.push_back(s);
     }
   }
 
@@ -97,17 +102,22 @@ namespace edge_sharpener {
 template <class MeshType>
 class InputFaces {
  public:
-  explicit InputFaces(const MeshType &m) {
-    triples_.reserve(m.face.size());
+  explicit InputFaces(const MeshType &m) : triples_(m.face.size()) {
     const auto index = [&](const typename MeshType::VertexType *v) {
       return std::uint32_t(vcg::tri::Index(m, v));
     };
-    for (const auto &f : m.face)
-      triples_.push_back({index(f.cV(0)), index(f.cV(1)), index(f.cV(2))});
+    const std::int64_t nf = std::int64_t(m.face.size());
+#pragma omp parallel for schedule(static, 8192) if (nf > kParallelMin)
+    for (std::int64_t i = 0; i < nf; ++i) {
+      const auto &f = m.face[i];
+      triples_[i] = {index(f.cV(0)), index(f.cV(1)), index(f.cV(2))};
+    }
   }
 
   /// Each input face's three vertices.
-  const std::vector<std::array<std::uint32_t, 3>> &faceVertices() const { return triples_; }
+  const std::vector<std::array<std::uint32_t, 3>> &faceVertices() const {
+    return triples_;
+  }
 
   /// Gives back its input face to every split face whose vertices all rest
   /// and whose children are as the split made them. An inserted vertex on
