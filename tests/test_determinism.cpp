@@ -255,3 +255,34 @@ TEST(Determinism, OpenBoundaryAndNonManifoldRingsMatchVcglib) {
 }
 
 }  // namespace
+
+TEST(Determinism, IndicesWhereKeepsIndexOrderForAnyThreadCount) {
+  const std::int64_t n = 100003;
+  const auto keep = [](std::int64_t i) { return i % 7 == 3 || i % 11 == 0; };
+  std::vector<std::uint32_t> expected;
+  for (std::int64_t i = 0; i < n; ++i)
+    if (keep(i)) expected.push_back(std::uint32_t(i));
+  for (const int threads : {1, 2, 3, 8}) {
+    ThreadCount scope(threads);
+    EXPECT_EQ(es::detail::indicesWhere(n, keep, /*minParallel=*/0), expected)
+        << threads << " threads";
+  }
+  EXPECT_TRUE(es::detail::indicesWhere(0, keep, 0).empty());
+}
+
+// The output's face normals are computed on every core; they are the ones
+// vcglib's UpdateNormal::PerFaceNormalized gives.
+TEST(Determinism, OutputFaceNormalsAreVcglibs) {
+  es::Mesh expected;
+  copyMesh(expected, inputMesh("lblock_tilted", 150000));
+  vcg::tri::UpdateNormal<es::Mesh>::PerFaceNormalized(expected);
+  for (const int threads : {1, 3}) {
+    ThreadCount scope(threads);
+    es::Mesh m;
+    copyMesh(m, inputMesh("lblock_tilted", 150000));
+    es::detail::updateFaceNormals(m);
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < m.face.size(); ++i) differ += m.face[i].N() != expected.face[i].N();
+    EXPECT_EQ(differ, 0u) << threads << " threads";
+  }
+}

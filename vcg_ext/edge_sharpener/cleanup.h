@@ -14,6 +14,8 @@
 
 #include "guards/vertex_moves.h"
 #include "subdivision.h"
+#include "util/fast_topology.h"
+#include "util/parallel.h"
 
 namespace edge_sharpener {
 
@@ -251,9 +253,12 @@ CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves
   };
   // Only split children can be degenerate, and no step below relabels a face
   // or adds one: scanning these (in index order) is scanning every face.
-  std::vector<std::size_t> children;
-  for (std::size_t i = 0; i < m.face.size(); ++i)
-    if (!m.face[i].IsD() && detail::isSplitChild(labels.face[&m.face[i]])) children.push_back(i);
+  const std::vector<std::uint32_t> children = detail::indicesWhere(
+      std::int64_t(m.face.size()),
+      [&](std::int64_t i) {
+        return !m.face[i].IsD() && detail::isSplitChild(labels.face[&m.face[i]]);
+      },
+      kParallelMin);
   for (const std::size_t i : children) s.degenerateFound += degenerate(m.face[i]);
   if (s.degenerateFound == 0) return s;
 

@@ -141,20 +141,14 @@ void sumOverCoreFaces(const std::vector<std::uint32_t> &coreFaces,
 template <class MeshType>
 std::vector<std::uint32_t> coreFaces(const MeshType &m, const FeatureZones &zones,
                                      const std::vector<int> &hops, int coreHops) {
-  const std::int64_t nf = std::int64_t(m.face.size());
-  std::vector<char> inCore(nf, 0);
-#pragma omp parallel for schedule(static, 8192) if (nf > kParallelMin)
-  for (std::int64_t fi = 0; fi < nf; ++fi) {
+  const auto inCore = [&](std::int64_t fi) {
     const auto &f = m.face[fi];
-    if (zones.faceRegion[fi] < 0 || f.IsD()) continue;
-    bool deep = true;
-    for (int k = 0; k < 3; ++k) deep &= hops[vcg::tri::Index(m, f.cV(k))] >= coreHops;
-    inCore[fi] = deep;
-  }
-  std::vector<std::uint32_t> faces;
-  for (std::int64_t fi = 0; fi < nf; ++fi)
-    if (inCore[fi]) faces.push_back(std::uint32_t(fi));
-  return faces;
+    if (zones.faceRegion[fi] < 0 || f.IsD()) return false;
+    for (int k = 0; k < 3; ++k)
+      if (hops[vcg::tri::Index(m, f.cV(k))] < coreHops) return false;
+    return true;
+  };
+  return indicesWhere(std::int64_t(m.face.size()), inCore, kParallelMin);
 }
 
 }  // namespace detail
