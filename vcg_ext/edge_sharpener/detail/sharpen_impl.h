@@ -5,6 +5,7 @@
 #include <vcg/complex/complex.h>
 
 #include <optional>
+#include <vector>
 // (vcglib's algorithm headers need complex.h first)
 #include <vcg/complex/algorithms/update/normal.h>
 
@@ -98,6 +99,38 @@ void updateFaceNormals(MeshType &m) {
   }
 }
 
+/// vcglib's UpdateNormal::PerVertexNormalized (the same normals: each
+/// vertex's faces' area-weighted normals summed in face order, normalized),
+/// without its use of the vertices' visited flags. The faces' normals and
+/// the normalization run on every core, the sums on one.
+template <class MeshType>
+void updateVertexNormals(MeshType &m) {
+  using NormalType = typename MeshType::VertexType::NormalType;
+  const std::int64_t nf = std::int64_t(m.face.size()), nv = std::int64_t(m.vert.size());
+  std::vector<NormalType> areaNormal(m.face.size());
+#pragma omp parallel for schedule(static, 8192) if (nf > kParallelMin)
+  for (std::int64_t fi = 0; fi < nf; ++fi)
+    if (!m.face[fi].IsD()) areaNormal[fi] = vcg::TriangleNormal(m.face[fi]);
+  const auto writable = [](const auto &v) { return !v.IsD() && v.IsRW(); };
+  std::vector<char> reached(m.vert.size(), 0);
+  for (std::int64_t fi = 0; fi < nf; ++fi) {
+    auto &f = m.face[fi];
+    if (f.IsD()) continue;
+    for (int k = 0; k < 3; ++k) {
+      auto &v = *f.V(k);
+      char &first = reached[vcg::tri::Index(m, &v)];
+      if (!first) {
+        first = 1;
+        if (writable(v)) v.N() = NormalType(0, 0, 0);
+      }
+      if (f.IsR() && writable(v)) v.N() += areaNormal[fi];
+    }
+  }
+#pragma omp parallel for schedule(static, 8192) if (nv > kParallelMin)
+  for (std::int64_t vi = 0; vi < nv; ++vi)
+    if (writable(m.vert[vi])) m.vert[vi].N().Normalize();
+}
+
 /// Colours (inspection only), compact vectors, normals, output counts.
 template <class MeshType>
 void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
@@ -105,7 +138,7 @@ void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
   if (opt.colorize) colorize(m, labels);
   vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
   if (vcg::tri::HasPerFaceNormal(m)) updateFaceNormals(m);
-  if (vcg::tri::HasPerVertexNormal(m)) vcg::tri::UpdateNormal<MeshType>::PerVertexNormalized(m);
+  if (vcg::tri::HasPerVertexNormal(m)) updateVertexNormals(m);
   report.outputVertices = m.vert.size();
   report.outputFaces = m.face.size();
   reportProgress(opt, 100, "Edge-Sharpener: done");
