@@ -15,6 +15,7 @@
 
 #include "../util/fast_topology.h"
 #include "../util/geometry.h"
+#include "../util/parallel.h"
 #include "../util/vertex_faces.h"
 #include "zones.h"
 
