@@ -252,37 +252,32 @@ PlanarFoldStats unfoldPlanarPatches(MeshType &m, const IsMoved &isMoved, double 
   std::vector<char> moved(m.vert.size());
 #pragma omp parallel for schedule(static, 8192) if (vertexCount > kParallelMin)
   for (std::int64_t v = 0; v < vertexCount; ++v) moved[v] = isMoved(std::size_t(v));
-  const std::int64_t faceCount = std::int64_t(m.face.size());
-  // Each thread lists the folded faces of its own range; the lists are read
-  // in range order, so the seeds' order does not depend on the thread count.
-  const int ranges = faceCount > kParallelMin ? detail::maxThreads() : 1;
-  std::vector<detail::PerThread<std::vector<FaceType *>>> found(ranges);
-#pragma omp parallel for schedule(static, 1) num_threads(ranges)
-  for (int t = 0; t < ranges; ++t) {
-    const std::int64_t begin = faceCount * t / ranges, end = faceCount * (t + 1) / ranges;
-    for (std::int64_t fi = begin; fi < end; ++fi) {
-      FaceType &f = m.face[fi];
-      if (f.IsD()) continue;
-      const auto *first = m.vert.data();
-      if (!moved[f.cV(0) - first] && !moved[f.cV(1) - first] && !moved[f.cV(2) - first]) continue;
-      for (int j = 0; j < 3; ++j)
-        if (detail::foldedOnPlane(f, j, tolerance)) {
-          found[t].value.push_back(&f);
-          break;
-        }
-    }
-  }
+  // Listed in face order on every core, so the seeds' order does not depend
+  // on the thread count.
+  const auto *first = m.vert.data();
+  const std::vector<std::uint32_t> folded = detail::indicesWhere(
+      std::int64_t(m.face.size()),
+      [&](std::int64_t fi) {
+        const FaceType &f = m.face[fi];
+        if (f.IsD()) return false;
+        if (!moved[f.cV(0) - first] && !moved[f.cV(1) - first] && !moved[f.cV(2) - first])
+          return false;
+        for (int j = 0; j < 3; ++j)
+          if (detail::foldedOnPlane(f, j, tolerance)) return true;
+        return false;
+      },
+      kParallelMin);
   PlanarFoldStats stats;
-  for (const auto &list : found)
-    for (FaceType *f : list.value) {
-      ++stats.folds;
-      for (int j = 0; j < 3; ++j)  // a patch tiled before may have taken this fold away
-        if (detail::foldedOnPlane(*f, j, tolerance)) {
-          stats.patches +=
-              detail::unfoldAround<MeshType>(f, j, tolerance, minAngleRad, kMaxFoldPatchFaces);
-          break;
-        }
-    }
+  for (const std::uint32_t fi : folded) {
+    FaceType *f = &m.face[fi];
+    ++stats.folds;
+    for (int j = 0; j < 3; ++j)  // a patch tiled before may have taken this fold away
+      if (detail::foldedOnPlane(*f, j, tolerance)) {
+        stats.patches +=
+            detail::unfoldAround<MeshType>(f, j, tolerance, minAngleRad, kMaxFoldPatchFaces);
+        break;
+      }
+  }
   return stats;
 }
 
