@@ -5,6 +5,7 @@
 #include <vcg/complex/complex.h>
 
 #include <optional>
+#include <type_traits>
 #include <vector>
 // (vcglib's algorithm headers need complex.h first)
 #include <vcg/complex/algorithms/update/normal.h>
@@ -86,44 +87,46 @@ void countOutcomes(const VertexMoves<MeshType> &moves, SharpenReport &report) {
   }
 }
 
-/// vcglib's UpdateNormal::PerFaceNormalized (the same normals), on every core.
+/// The output's normals, those of vcglib's UpdateNormal::PerFaceNormalized
+/// and PerVertexNormalized (each vertex's faces' area-weighted normals summed
+/// in face order, normalized), with each face's area normal computed once and
+/// without vcglib's use of the vertices' visited flags. The faces' normals
+/// and the normalization run on every core, the vertices' sums on one.
 template <class MeshType>
-void updateFaceNormals(MeshType &m) {
-  const std::int64_t nf = std::int64_t(m.face.size());
+void updateOutputNormals(MeshType &m) {
+  const bool faceNormals = vcg::tri::HasPerFaceNormal(m);
+  const bool vertexNormals = vcg::tri::HasPerVertexNormal(m);
+  if (!faceNormals && !vertexNormals) return;
+  using AreaNormal = std::decay_t<decltype(vcg::TriangleNormal(m.face[0]))>;
+  using VertexNormal = typename MeshType::VertexType::NormalType;
+  const std::int64_t nf = std::int64_t(m.face.size()), nv = std::int64_t(m.vert.size());
+  std::vector<AreaNormal> areaNormal(vertexNormals ? m.face.size() : 0);
 #pragma omp parallel for schedule(static, 8192) if (nf > kParallelMin)
   for (std::int64_t fi = 0; fi < nf; ++fi) {
     auto &f = m.face[fi];
     if (f.IsD()) continue;
-    f.N() = vcg::TriangleNormal(f);
-    f.N().Normalize();
+    const AreaNormal n = vcg::TriangleNormal(f);
+    if (vertexNormals) areaNormal[fi] = n;
+    if (faceNormals) {
+      f.N() = n;
+      f.N().Normalize();
+    }
   }
-}
-
-/// vcglib's UpdateNormal::PerVertexNormalized (the same normals: each
-/// vertex's faces' area-weighted normals summed in face order, normalized),
-/// without its use of the vertices' visited flags. The faces' normals and
-/// the normalization run on every core, the sums on one.
-template <class MeshType>
-void updateVertexNormals(MeshType &m) {
-  using NormalType = typename MeshType::VertexType::NormalType;
-  const std::int64_t nf = std::int64_t(m.face.size()), nv = std::int64_t(m.vert.size());
-  std::vector<NormalType> areaNormal(m.face.size());
-#pragma omp parallel for schedule(static, 8192) if (nf > kParallelMin)
-  for (std::int64_t fi = 0; fi < nf; ++fi)
-    if (!m.face[fi].IsD()) areaNormal[fi] = vcg::TriangleNormal(m.face[fi]);
+  if (!vertexNormals) return;
   const auto writable = [](const auto &v) { return !v.IsD() && v.IsRW(); };
   std::vector<char> reached(m.vert.size(), 0);
   for (std::int64_t fi = 0; fi < nf; ++fi) {
     auto &f = m.face[fi];
     if (f.IsD()) continue;
+    const VertexNormal n = areaNormal[fi];
     for (int k = 0; k < 3; ++k) {
       auto &v = *f.V(k);
       char &first = reached[vcg::tri::Index(m, &v)];
       if (!first) {
         first = 1;
-        if (writable(v)) v.N() = NormalType(0, 0, 0);
+        if (writable(v)) v.N() = VertexNormal(0, 0, 0);
       }
-      if (f.IsR() && writable(v)) v.N() += areaNormal[fi];
+      if (f.IsR() && writable(v)) v.N() += n;
     }
   }
 #pragma omp parallel for schedule(static, 8192) if (nv > kParallelMin)
@@ -137,8 +140,7 @@ void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
             SharpenReport &report) {
   if (opt.colorize) colorize(m, labels);
   vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
-  if (vcg::tri::HasPerFaceNormal(m)) updateFaceNormals(m);
-  if (vcg::tri::HasPerVertexNormal(m)) updateVertexNormals(m);
+  updateOutputNormals(m);
   report.outputVertices = m.vert.size();
   report.outputFaces = m.face.size();
   reportProgress(opt, 100, "Edge-Sharpener: done");
