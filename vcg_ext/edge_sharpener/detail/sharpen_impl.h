@@ -226,15 +226,10 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   if (input) {
     const int verticesBefore = m.vn, facesBefore = m.fn;
     report.evidence.facesGivenBack = input->unsplitResting(m, moves);
-    const bool givenBack = report.evidence.facesGivenBack > 0;
     report.evidence.restingVerticesRemoved =
-        InputFaces<MeshType>::dissolveRestingEdgeVertices(m, moves, /*adjacencyValid=*/!givenBack);
+        InputFaces<MeshType>::dissolveRestingEdgeVertices(m, moves);
     report.evidence.verticesRemoved = std::size_t(verticesBefore - m.vn);
     report.evidence.facesRemoved = std::size_t(facesBefore - m.fn);
-    // Before the compaction: it remaps adjacency, which must not name a
-    // deleted face (the project's build; vcglib's costs as much as the floor).
-    // The merge alone keeps it up to date.
-    if (givenBack) buildFaceFace(m);
   }
   detail::finish(m, labels, opt, report);
   return report;

@@ -125,7 +125,8 @@ class InputFaces {
   /// back) stays, and the face becomes its input face fanned from that
   /// vertex (restedTriangles): the same surface, as the face is at rest.
   /// Rewrites the children's slots and deletes the rest and the inserted
-  /// vertices no face needs, by flag (rebuild FF adjacency, then compact).
+  /// vertices no face needs, by flag. FF adjacency, up to date on entry,
+  /// stays up to date (givenBackAdjacency).
   /// \return the number of faces given back (with or without a kept vertex).
   std::size_t unsplitResting(MeshType &m, const VertexMoves<MeshType> &moves) const {
     const SplitPlan &plan = moves.plan();
@@ -165,6 +166,8 @@ class InputFaces {
       if (!ok)
         for (std::size_t v : insertedOf(k)) needed[v - n0] = 1;
     }
+    std::vector<std::vector<std::array<std::size_t, 3>>> rested(count);
+    std::vector<char> rewritten(m.face.size(), 0);  // a given-back face's slots
     std::size_t given = 0;
     for (std::size_t k = 0; k < count; ++k) {
       if (!back[k]) continue;
@@ -172,21 +175,46 @@ class InputFaces {
       std::array<bool, 3> keep{};
       for (int i = 0; i < 3; ++i) keep[i] = sf.edgeVertex[i] >= 0 && needed[sf.edgeVertex[i]];
       const auto &t = triples_[sf.face];
-      const auto rested = detail::restedTriangles(sf, {t[0], t[1], t[2]}, n0, keep);
-      if (rested.size() == children[k].size()) continue;  // nothing to take away
+      rested[k] = detail::restedTriangles(sf, {t[0], t[1], t[2]}, n0, keep);
+      if (rested[k].size() == children[k].size()) {  // nothing to take away
+        rested[k].clear();
+        continue;
+      }
       ++given;
+      for (std::size_t c = 0; c < children[k].size(); ++c)
+        rewritten[vcg::tri::Index(m, slot(k, c))] = 1;
+    }
+    if (given == 0) return 0;
+    // Before the rewrite: the faces beside the rewritten ones, across the
+    // edges they share with them (their vertices stay).
+    std::vector<detail::FaceEdgeKey> beside;
+    for (std::size_t k = 0; k < count; ++k)
+      for (std::size_t c = 0; !rested[k].empty() && c < children[k].size(); ++c) {
+        const auto &f = slot(k, c);
+        for (int i = 0; i < 3; ++i) {
+          const std::size_t g = vcg::tri::Index(m, f.cFFp(i));
+          if (!rewritten[g]) beside.push_back(detail::faceEdgeKey(m, g, f.cFFi(i), true));
+        }
+      }
+    std::vector<detail::FaceEdgeKey> edges;
+    for (std::size_t k = 0; k < count; ++k) {
+      if (rested[k].empty()) continue;
       for (std::size_t c = 0; c < children[k].size(); ++c) {
         auto &f = slot(k, c);
-        if (c >= rested.size()) {
+        if (c >= rested[k].size()) {
           vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
           continue;
         }
-        for (int j = 0; j < 3; ++j) f.V(j) = &m.vert[rested[c][j]];
+        for (int j = 0; j < 3; ++j) f.V(j) = &m.vert[rested[k][c][j]];
+        for (int j = 0; j < 3; ++j)
+          edges.push_back(detail::faceEdgeKey(m, vcg::tri::Index(m, f), j, false));
       }
       for (std::size_t v : insertedOf(k))
         if (!needed[v - n0] && !m.vert[v].IsD())
           vcg::tri::Allocator<MeshType>::DeleteVertex(m, m.vert[v]);
     }
+    edges.insert(edges.end(), beside.begin(), beside.end());
+    detail::linkFaceEdges(m, edges);
     return given;
   }
 
@@ -196,13 +224,10 @@ class InputFaces {
   /// hold it on each side: these become (a, b, x), the same surface, as v
   /// lies on the segment ab. Such a vertex adds nothing to the shape, and
   /// metrics that sample vertices (MeshLab's Hausdorff filter) would count
-  /// it twice. Deletes by flag. With `adjacencyValid` (FF adjacency is up to
-  /// date on entry) it stays up to date, by a local update around each
-  /// merge; without, the caller rebuilds it before it compacts, so that no
-  /// live face names a deleted one.
+  /// it twice. Deletes by flag. FF adjacency, up to date on entry, stays up
+  /// to date, by a local update around each merge.
   /// \return the number of vertices removed.
-  static std::size_t dissolveRestingEdgeVertices(MeshType &m, const VertexMoves<MeshType> &moves,
-                                                 bool adjacencyValid) {
+  static std::size_t dissolveRestingEdgeVertices(MeshType &m, const VertexMoves<MeshType> &moves) {
     using FaceType = typename MeshType::FaceType;
     using VertexType = typename MeshType::VertexType;
     const SplitPlan &plan = moves.plan();
@@ -290,7 +315,7 @@ class InputFaces {
         // Edge (v, b) became (a, b) in place: its neighbour, the other
         // side's (v, b, y), is still right. Edge (x, v) became (x, a): its
         // neighbour is (a, v, x)'s across (x, a).
-        if (adjacencyValid) adoptNeighbour(*side.withB, *side.withA, a, side.apex);
+        adoptNeighbour(*side.withB, *side.withA, a, side.apex);
         vcg::tri::Allocator<MeshType>::DeleteFace(m, *side.withA);
       }
       vcg::tri::Allocator<MeshType>::DeleteVertex(m, *v);

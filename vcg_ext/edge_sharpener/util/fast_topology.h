@@ -142,3 +142,64 @@ FaceFaceDiagnostics buildFaceFace(MeshType &m) {
 }
 
 }  // namespace edge_sharpener
+
+namespace edge_sharpener::detail {
+
+/// One face edge for a local adjacency update: its vertices (lo < hi), its
+/// face and side, and whether it belongs to a face outside the changed ones
+/// (such an edge must find its partner among the changed faces).
+struct FaceEdgeKey {
+  std::uint32_t lo, hi, face;
+  std::int8_t edge;
+  bool outside;
+  bool operator<(const FaceEdgeKey &o) const {
+    if (lo != o.lo) return lo < o.lo;
+    if (hi != o.hi) return hi < o.hi;
+    return face != o.face ? face < o.face : edge < o.edge;
+  }
+};
+
+template <class MeshType>
+FaceEdgeKey faceEdgeKey(const MeshType &m, std::size_t face, int edge, bool outside) {
+  const auto &f = m.face[face];
+  const auto a = std::uint32_t(vcg::tri::Index(m, f.cV(edge)));
+  const auto b = std::uint32_t(vcg::tri::Index(m, f.cV((edge + 1) % 3)));
+  return {std::min(a, b), std::max(a, b), std::uint32_t(face), std::int8_t(edge), outside};
+}
+
+/// Face-face adjacency of the changed faces' edges (`outside` false) and of
+/// the edges their unchanged neighbours share with them (`outside` true):
+/// pairs of equal edges point at each other, a changed face's lone edge is a
+/// boundary. What a full rebuild gives on a 2-manifold mesh; anything else
+/// (three faces on an edge, an outside edge without its partner) falls back
+/// to the full rebuild.
+template <class MeshType>
+void linkFaceEdges(MeshType &m, std::vector<FaceEdgeKey> &edges) {
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end(),
+                          [](const FaceEdgeKey &a, const FaceEdgeKey &b) {
+                            return a.face == b.face && a.edge == b.edge && a.lo == b.lo &&
+                                   a.hi == b.hi;
+                          }),
+              edges.end());
+  const auto link = [&](const FaceEdgeKey &a, const FaceEdgeKey &b) {
+    m.face[a.face].FFp(a.edge) = &m.face[b.face];
+    m.face[a.face].FFi(a.edge) = char(b.edge);
+  };
+  for (std::size_t e = 0; e < edges.size();) {
+    std::size_t run = e + 1;
+    while (run < edges.size() && edges[run].lo == edges[e].lo && edges[run].hi == edges[e].hi)
+      ++run;
+    const bool paired = run - e == 2 && !(edges[e].outside && edges[e + 1].outside);
+    const bool boundary = run - e == 1 && !edges[e].outside;
+    if (!paired && !boundary) {
+      buildFaceFace(m);
+      return;
+    }
+    link(edges[e], edges[run - 1]);
+    link(edges[run - 1], edges[e]);
+    e = run;
+  }
+}
+
+}  // namespace edge_sharpener::detail
