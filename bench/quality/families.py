@@ -651,7 +651,24 @@ def default_section(results):
           "finished_hexprism own MC 1% 0.501% -> 0.550% (its designed fillets' corners; still "
           "better than the input's 0.696%), and own MC's mean ×5.71 -> ×5.61. A corner "
           "placed on three planes beside a designed fillet is the harm the guard exists to "
-          "avoid, so the rule stays as it was.", ""]
+          "avoid, so the rule stays as it was.", "",
+          "**Small flat pieces of a chamfer band stay regions** (tried and rejected on "
+          "2026-11-27). On lblock_tilted at UMR 1% (tuning half) the max, 0.507%, sits on a "
+          "convex edge where 7 chamfer faces around one vertex lie in one plane: segmentation "
+          "makes them a region one hop deep, the edge is cut into five features around it, "
+          "three come out weak and the stretch stays chamfered. Returning every region one hop "
+          "deep to the zone (`--min-region-depth 2`) gained there but harmed the tuning half "
+          "(cylinder_block CSG 1% worse than its input). Returning only those spanning less "
+          "than a facet's 10 spacings still lost on curved shapes (octa-flower17k IER 2% left "
+          "whole: max 2.34% -> 4.21%); less than 3 spacings (about one vertex's umbrella) "
+          "gained on the tuning half with none worse (UMR ×1.77 / ×3.91 -> ×1.87 / ×4.10, "
+          "OpenVDB ×1.23 / ×2.09 -> ×1.26 / ×2.13; lblock_tilted UMR 1% 0.507% -> 0.263%, "
+          "OpenVDB 1% 0.758% -> 0.348%, 7_8ths_cube UMR 0.5% 0.167% -> 0.095%). Measured once "
+          "on the validation half, it lost: Screened Poisson max ×1.18 -> ×1.14 (cube 0.635% "
+          "-> 0.879%, its input's), own MC RMS ×13.74 -> ×13.02 and finished_hexprism UMR 0.5% "
+          "0.275% -> 0.307% (its designed bevels' small facets dissolved), UMR ×4.07 / ×7.30 "
+          "-> ×4.05 / ×7.21. A flat umbrella inside a band and a small designed facet look the "
+          "same to segmentation, so regions stay as they are.", ""]
     return L
 
 
