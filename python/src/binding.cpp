@@ -108,6 +108,10 @@ CheckedArrays<Real> checkArrays(const py::array &vertices, const py::array &face
 }
 
 /// Builds `m` from checked arrays (fresh, hence compact, as the core requires).
+/// Reserves twice the counts first, as the command line does
+/// (apps/capacity_hint.h): the subdivision then appends without reallocating
+/// the arrays (and moving every pointer); unwritten capacity is only address
+/// space.
 template <class MeshType, class Real>
 void buildMesh(const CheckedArrays<Real> &arrays, MeshType &m) {
   using Alloc = vcg::tri::Allocator<MeshType>;
@@ -116,6 +120,8 @@ void buildMesh(const CheckedArrays<Real> &arrays, MeshType &m) {
   const std::size_t nf = std::size_t(arrays.faces.shape(0));
   const Real *xyz = arrays.vertices.data();
   const std::int64_t *index = arrays.faces.data();
+  m.vert.reserve(2 * nv);
+  m.face.reserve(2 * nf);
   if (nv > 0) Alloc::AddVertices(m, nv);
   for (std::size_t i = 0; i < nv; ++i)
     m.vert[i].P() = {Scalar(xyz[3 * i]), Scalar(xyz[3 * i + 1]), Scalar(xyz[3 * i + 2])};
