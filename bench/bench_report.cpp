@@ -97,9 +97,14 @@ int main(int argc, char **argv) {
           "with the grid).\n\n";
   md << "## Machine\n\n```\n" << readFile(arg["--machine"]) << "```\n\n";
   md << "Timings are medians over Google Benchmark repetitions (wall-clock time of the call "
-        "only; mesh copies are not timed). The machine is shared with other users, so the "
-        "numbers are noisy: compare ratios measured in the same run rather than absolute "
-        "times across runs.\n\n";
+        "only; mesh copies are not timed). Each call gets a copy with twice its vertex and face "
+        "counts reserved, as the command line and the Python module reserve them, so the "
+        "subdivision appends without reallocating the arrays. A mesh with no spare capacity "
+        "(MeshLab's) makes vcglib reallocate them and move every pointer, at a cost that on "
+        "this virtual machine varies by several times between runs (the host's first touch "
+        "of fresh pages); the meshlabserver measurement below includes it. The machine is "
+        "shared with other users, so the numbers are noisy: compare ratios measured in the "
+        "same run rather than absolute times across runs.\n\n";
 
   md << "## Core versus the floor\n\n"
         "Floor: vcglib's `UpdateTopology::FaceFace` + `UpdateNormal::PerFaceNormalized` on the "
