@@ -174,111 +174,40 @@ inline std::vector<std::array<std::size_t, 3>> restedTriangles(const SplitFace &
 
 namespace detail {
 
-/// One face edge of a child triangle, keyed by its vertex indices.
-struct ChildEdge {
-  std::size_t lo, hi;  ///< vertex indices, lo < hi
-  std::size_t face;    ///< the child's face index
-  int edge;            ///< edge index in the child
-  bool operator<(const ChildEdge &o) const {
-    if (lo != o.lo) return lo < o.lo;
-    if (hi != o.hi) return hi < o.hi;
-    return face != o.face ? face < o.face : edge < o.edge;
-  }
-};
-
 /// The parent's face-face adjacency before it was split, per edge.
 struct OldAdjacency {
   std::array<std::size_t, 3> face;
   std::array<int, 3> edge;
 };
 
-/// Every edge of every child (sorted by its vertex pair), child 0 in its
-/// parent's slot and the others from `firstNew` on; marks the parents in
-/// `split`.
-inline std::vector<ChildEdge> collectChildEdges(
-    const SplitPlan &plan, const std::vector<std::vector<std::array<std::size_t, 3>>> &children,
-    std::size_t firstNew, std::vector<char> &split) {
-  std::vector<ChildEdge> edges;
-  std::size_t next = firstNew;
-  for (std::size_t k = 0; k < plan.faces.size(); ++k) {
-    split[plan.faces[k].face] = 1;
-    for (std::size_t c = 0; c < children[k].size(); ++c) {
-      const std::size_t face = c == 0 ? plan.faces[k].face : next++;
-      const auto &t = children[k][c];
-      for (int j = 0; j < 3; ++j)
-        edges.push_back({std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3]), face, j});
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  return edges;
-}
-
-/// Per face index: the plan entry k of the parent it is a child of, for
-/// the parents themselves ([0, firstNew), 0 elsewhere) and for the appended
-/// children (from firstNew on; an unpaired child edge lies on an edge of it).
-inline std::vector<std::uint32_t> parentEntries(
-    const SplitPlan &plan, const std::vector<std::vector<std::array<std::size_t, 3>>> &children,
-    std::size_t faceCount, std::size_t firstNew) {
-  // 32 bits: a full-size array.
-  std::vector<std::uint32_t> entry(faceCount + 1, 0);
-  for (std::size_t k = 0; k < plan.faces.size(); ++k) entry[plan.faces[k].face] = std::uint32_t(k);
-  std::size_t next = firstNew;
-  for (std::size_t k = 0; k < plan.faces.size(); ++k)
-    for (std::size_t c = 1; c < children[k].size(); ++c) entry[next++] = std::uint32_t(k);
-  return entry;
-}
-
-/// Face-face adjacency after the split, updated locally: only the children
-/// and the unsplit faces across the parents' unsplit edges change. Gives what
-/// a full rebuild gives, since the mesh is 2-manifold (its edges have at most
-/// two faces); falls back to a full rebuild (fast_topology.h) otherwise.
+/// Face-face adjacency after the split, updated locally (linkFaceEdges):
+/// every edge of every child (child 0 in its parent's slot, the others from
+/// `firstNew` on), and the edges the unsplit faces across the parents' edges
+/// share with them. Gives what a full rebuild gives, since the mesh is
+/// 2-manifold (its edges have at most two faces); falls back to a full
+/// rebuild (fast_topology.h) otherwise.
 template <class MeshType>
 void updateSplitAdjacency(MeshType &m, const SplitPlan &plan,
                           const std::vector<std::vector<std::array<std::size_t, 3>>> &children,
-                          const std::vector<std::array<std::size_t, 3>> &parentVertices,
                           const std::vector<OldAdjacency> &old, std::size_t firstNew) {
   std::vector<char> split(m.face.size(), 0);
-  const std::vector<ChildEdge> edges = collectChildEdges(plan, children, firstNew, split);
-  const std::vector<std::uint32_t> parentOf =
-      parentEntries(plan, children, m.face.size(), firstNew);
-  auto link = [&](std::size_t f, int i, std::size_t g, int j) {
-    m.face[f].FFp(i) = &m.face[g];
-    m.face[f].FFi(i) = char(j);
-  };
-  for (std::size_t e = 0; e < edges.size();) {
-    std::size_t run = e + 1;
-    while (run < edges.size() && edges[run].lo == edges[e].lo && edges[run].hi == edges[e].hi)
-      ++run;
-    if (run - e > 2) {  // not 2-manifold: no local shortcut
-      buildFaceFace(m);
-      return;
+  for (const SplitFace &sf : plan.faces) split[sf.face] = 1;
+  std::vector<FaceEdgeKey> edges;
+  std::size_t next = firstNew;
+  for (std::size_t k = 0; k < plan.faces.size(); ++k) {
+    for (std::size_t c = 0; c < children[k].size(); ++c) {
+      const std::size_t face = c == 0 ? plan.faces[k].face : next++;
+      for (int j = 0; j < 3; ++j) edges.push_back(faceEdgeKey(m, face, j, false));
     }
-    const ChildEdge &a = edges[e];
-    if (run - e == 2) {
-      const ChildEdge &b = edges[e + 1];
-      link(a.face, a.edge, b.face, b.edge);
-      link(b.face, b.edge, a.face, a.edge);
-    } else {
-      // Unpaired: an unsplit edge of the parent (its old neighbour is not
-      // split, else that neighbour's child would pair it), or a boundary.
-      const std::size_t k = parentOf[a.face];
-      const auto &v = parentVertices[k];
-      link(a.face, a.edge, a.face, a.edge);
-      for (int i = 0; i < 3; ++i) {
-        const std::size_t p = v[i], q = v[(i + 1) % 3];
-        if (std::min(p, q) != a.lo || std::max(p, q) != a.hi) continue;
-        const std::size_t g = old[k].face[i];
-        if (g != plan.faces[k].face && !split[g]) {
-          link(a.face, a.edge, g, old[k].edge[i]);
-          link(g, old[k].edge[i], a.face, a.edge);
-        }
-        break;
-      }
+    // An unsplit neighbour across a parent's edge (a split one's children
+    // pair the edge themselves; the parent itself: a border).
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t g = old[k].face[i];
+      if (!split[g]) edges.push_back(faceEdgeKey(m, g, old[k].edge[i], true));
     }
-    e = run;
   }
+  linkFaceEdges(m, edges);
 }
-
 }  // namespace detail
 
 /// Stage 4: inserts the planned vertices at their rest positions and splits
@@ -301,12 +230,10 @@ SubdivisionStats subdivide(MeshType &m, const SplitPlan &plan, MeshLabels<MeshTy
   }
   std::size_t extra = 0;
   std::vector<std::vector<std::array<std::size_t, 3>>> children(plan.faces.size());
-  std::vector<std::array<std::size_t, 3>> parentVertices(plan.faces.size());
   for (std::size_t k = 0; k < plan.faces.size(); ++k) {
     const auto &f = m.face[plan.faces[k].face];
     const std::array<std::size_t, 3> v{vcg::tri::Index(m, f.cV(0)), vcg::tri::Index(m, f.cV(1)),
                                        vcg::tri::Index(m, f.cV(2))};
-    parentVertices[k] = v;
     children[k] = detail::childTriangles(plan.faces[k], v, plan.originalVertexCount);
     extra += children[k].size() - 1;
     switch (children[k].size()) {
@@ -341,7 +268,7 @@ SubdivisionStats subdivide(MeshType &m, const SplitPlan &plan, MeshLabels<MeshTy
       for (int j = 0; j < 3; ++j) child.V(j) = &m.vert[children[k][c][j]];
     }
   }
-  detail::updateSplitAdjacency(m, plan, children, parentVertices, old, firstNew);
+  detail::updateSplitAdjacency(m, plan, children, old, firstNew);
   return s;
 }
 

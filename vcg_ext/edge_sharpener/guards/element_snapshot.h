@@ -126,7 +126,7 @@ class InputFaces {
   /// vertex (restedTriangles): the same surface, as the face is at rest.
   /// Rewrites the children's slots and deletes the rest and the inserted
   /// vertices no face needs, by flag. FF adjacency, up to date on entry,
-  /// stays up to date (givenBackAdjacency).
+  /// stays up to date (detail::linkFaceEdges over the rewritten faces).
   /// \return the number of faces given back (with or without a kept vertex).
   std::size_t unsplitResting(MeshType &m, const VertexMoves<MeshType> &moves) const {
     const SplitPlan &plan = moves.plan();
