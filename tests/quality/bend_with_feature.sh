@@ -4,11 +4,5 @@
 # voxels round a sharp edge most there) moves with its feature when the feature's evidence is
 # strong. Assertions in check_bend_with_feature.py.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-if [[ ! -x $ES_BUILD_DIR/bench/samplers/vdb-remesh ]]; then
-  echo "OpenVDB is not installed (no $ES_BUILD_DIR/bench/samplers/vdb-remesh; scripts/bootstrap.sh installs libopenvdb-dev): skipped"
-  exit $SKIP
-fi
-"$PYTHON" "$ES_SOURCE_DIR/bench/quality/run.py" --build "$ES_BUILD_DIR" \
-  --models cylinder_block,lblock_tilted --input-keys vdb_2pct --variants auto --no-peer \
-  --cache "$ES_WORK_DIR/cache" --results "$ES_WORK_DIR/results.json" --no-report --jobs 2
-"$PYTHON" "$ES_SOURCE_DIR/tests/quality/check_bend_with_feature.py" "$ES_WORK_DIR/results.json"
+require_openvdb
+default_method_check cylinder_block,lblock_tilted vdb_2pct check_bend_with_feature.py

@@ -22,3 +22,28 @@ rm -rf "$ES_WORK_DIR"
 mkdir -p "$ES_WORK_DIR"
 cd "$ES_WORK_DIR"
 unset QT_QPA_PLATFORM
+
+# Skips the test unless OpenVDB's sampler was built / Open3D is there for /usr/bin/python3.
+require_openvdb() {
+  if [[ ! -x $ES_BUILD_DIR/bench/samplers/vdb-remesh ]]; then
+    echo "OpenVDB is not installed (no $ES_BUILD_DIR/bench/samplers/vdb-remesh; scripts/bootstrap.sh installs libopenvdb-dev): skipped"
+    exit $SKIP
+  fi
+}
+require_open3d() {
+  if ! /usr/bin/python3 -c "import open3d" 2>/dev/null; then
+    echo "Open3D is not installed for /usr/bin/python3 (scripts/bootstrap.sh installs python3-open3d): skipped"
+    exit $SKIP
+  fi
+}
+
+# The default method on the inputs INPUT_KEYS (run.py --input-keys) of MODELS, then CHECK (a
+# script in tests/quality) on the results; further arguments go to run.py.
+default_method_check() {
+  local models=$1 keys=$2 check=$3
+  shift 3
+  "$PYTHON" "$ES_SOURCE_DIR/bench/quality/run.py" --build "$ES_BUILD_DIR" "$@" \
+    --models "$models" --input-keys "$keys" --variants auto --no-peer \
+    --cache "$ES_WORK_DIR/cache" --results "$ES_WORK_DIR/results.json" --no-report --jobs 2
+  "$PYTHON" "$ES_SOURCE_DIR/tests/quality/$check" "$ES_WORK_DIR/results.json"
+}

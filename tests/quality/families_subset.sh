@@ -4,14 +4,8 @@
 # and 0.2 voxel; every method and variant and MeshLab's UnSharp Mask peer; assertions in
 # check_families_subset.py (UMR and the project's marching cubes: fast_subset).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-if [[ ! -x $ES_BUILD_DIR/bench/samplers/vdb-remesh ]]; then
-  echo "OpenVDB is not installed (no $ES_BUILD_DIR/bench/samplers/vdb-remesh; scripts/bootstrap.sh installs libopenvdb-dev): skipped"
-  exit $SKIP
-fi
-if ! /usr/bin/python3 -c "import open3d" 2>/dev/null; then
-  echo "Open3D is not installed for /usr/bin/python3 (scripts/bootstrap.sh installs python3-open3d): skipped"
-  exit $SKIP
-fi
+require_openvdb
+require_open3d
 "$PYTHON" "$ES_SOURCE_DIR/bench/quality/run.py" --build "$ES_BUILD_DIR" \
   --models lblock_tilted,cylinder_block,cross_prism \
   --input-keys vdb_1pct,ier_1pct,poisson_depth7,scan_noise0,scan_noise0.2voxel \

@@ -9,7 +9,4 @@ if [[ ! -f $shared/octa-flower17k.stl ]]; then
   echo "$shared/octa-flower17k.stl not found (the reference meshes are not beside the checkout): skipped"
   exit $SKIP
 fi
-"$PYTHON" "$ES_SOURCE_DIR/bench/quality/run.py" --build "$ES_BUILD_DIR" --shared "$shared" \
-  --models octa-flower17k --input-keys poisson_depth7 --variants auto --no-peer \
-  --cache "$ES_WORK_DIR/cache" --results "$ES_WORK_DIR/results.json" --no-report --jobs 2
-"$PYTHON" "$ES_SOURCE_DIR/tests/quality/check_long_move.py" "$ES_WORK_DIR/results.json"
+default_method_check octa-flower17k poisson_depth7 check_long_move.py --shared "$shared"

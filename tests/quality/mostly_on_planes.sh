@@ -4,7 +4,4 @@
 # and features whose vertices the other tests partly refused are sharpened. Assertions in
 # check_mostly_on_planes.py.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-"$PYTHON" "$ES_SOURCE_DIR/bench/quality/run.py" --build "$ES_BUILD_DIR" \
-  --models bevelled_block,lblock_tilted --input-keys mc_1pct --variants auto --no-peer \
-  --cache "$ES_WORK_DIR/cache" --results "$ES_WORK_DIR/results.json" --no-report --jobs 2
-"$PYTHON" "$ES_SOURCE_DIR/tests/quality/check_mostly_on_planes.py" "$ES_WORK_DIR/results.json"
+default_method_check bevelled_block,lblock_tilted mc_1pct check_mostly_on_planes.py

@@ -5,7 +5,4 @@
 # edges' far samples lie on its fillets. Sharpened by the default method. Assertions in
 # check_on_plane.py.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-"$PYTHON" "$ES_SOURCE_DIR/bench/quality/run.py" --build "$ES_BUILD_DIR" \
-  --models lblock_tilted,plate_holes --input-keys ier_2pct,ier_1pct --variants auto --no-peer \
-  --cache "$ES_WORK_DIR/cache" --results "$ES_WORK_DIR/results.json" --no-report --jobs 2
-"$PYTHON" "$ES_SOURCE_DIR/tests/quality/check_on_plane.py" "$ES_WORK_DIR/results.json"
+default_method_check lblock_tilted,plate_holes ier_2pct,ier_1pct check_on_plane.py

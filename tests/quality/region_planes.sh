@@ -4,7 +4,4 @@
 # features, where placement fits its plane; a region that is a plane in its core gives
 # placement that plane instead. Assertions in check_region_planes.py.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-"$PYTHON" "$ES_SOURCE_DIR/bench/quality/run.py" --build "$ES_BUILD_DIR" \
-  --models cylinder_block,lblock_tilted --input-keys poisson_depth7 --variants auto --no-peer \
-  --cache "$ES_WORK_DIR/cache" --results "$ES_WORK_DIR/results.json" --no-report --jobs 2
-"$PYTHON" "$ES_SOURCE_DIR/tests/quality/check_region_planes.py" "$ES_WORK_DIR/results.json"
+default_method_check cylinder_block,lblock_tilted poisson_depth7 check_region_planes.py

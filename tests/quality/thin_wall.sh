@@ -4,11 +4,5 @@
 # intersections) at 1%, sharpened by the default method: never worse than its input.
 # Assertions in check_thin_wall.py.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-if [[ ! -x $ES_BUILD_DIR/bench/samplers/vdb-remesh ]]; then
-  echo "OpenVDB is not installed (no $ES_BUILD_DIR/bench/samplers/vdb-remesh; scripts/bootstrap.sh installs libopenvdb-dev): skipped"
-  exit $SKIP
-fi
-"$PYTHON" "$ES_SOURCE_DIR/bench/quality/run.py" --build "$ES_BUILD_DIR" \
-  --models tube --input-keys vdb_1pct,csg_1pct --variants auto --no-peer \
-  --cache "$ES_WORK_DIR/cache" --results "$ES_WORK_DIR/results.json" --no-report --jobs 2
-"$PYTHON" "$ES_SOURCE_DIR/tests/quality/check_thin_wall.py" "$ES_WORK_DIR/results.json"
+require_openvdb
+default_method_check tube vdb_1pct,csg_1pct check_thin_wall.py
