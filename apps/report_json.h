@@ -106,6 +106,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"noise_spacings", r.evidence.noiseSpacings},
                      {"planar_fraction", r.evidence.planarFraction},
                      {"whole_mesh_left", r.evidence.wholeMeshLeft},
+                     {"flattened_vertices", r.evidence.flattenedVertices},
                      {"faces_given_back", r.evidence.facesGivenBack},
                      {"resting_vertices_removed", r.evidence.restingVerticesRemoved},
                      {"vertices_removed", r.evidence.verticesRemoved},

@@ -522,7 +522,7 @@ def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cach
     if "evidence" in rep:  # why the default left what it left (families.default_misses)
         row["evidence"] = {k: rep["evidence"][k] for k in (
             "features", "weak_features", "refused_fraction", "refused_bound", "median_lift",
-            "noise_spacings", "planar_fraction", "whole_mesh_left")}
+            "noise_spacings", "planar_fraction", "whole_mesh_left", "flattened_vertices")}
     if not measure_run(tools, out, model.reference, timeout, row):
         return row
     if spec.kind == "asis" or model.name in ("sphere", "rocker-arm"):

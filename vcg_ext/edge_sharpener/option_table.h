@@ -283,6 +283,12 @@ inline const std::vector<OptionSpec> &optionTable() {
        "of their smooth region's mean normal) for the smooth bound to apply.",
        T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_REAL(minPlanarAreaFraction)},
+      {"flatten_rough_planes", "--keep-rough-planes", "", "Flatten a rough input's planes",
+       "Auto method: on a rough input (a fused scan; see --smooth-noise), the vertices of every "
+       "region that is a plane in its core move onto that plane first, within one sample "
+       "spacing: a scan's fusion bulges its planes beside each edge.",
+       T::Flag, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_FLAG(flattenRoughPlanes)},
       {"min_median_lift", "--min-lift", "", "Minimum median lift",
        "Auto method: nothing is sharpened when the moves mostly slide along the input's surface "
        "instead of lifting it to sharp edges: the median distance of the new vertices' targets "

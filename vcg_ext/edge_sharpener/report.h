@@ -105,6 +105,7 @@ struct EvidenceStats {
   std::size_t restingVerticesRemoved = 0;  ///< other inserted vertices at rest, merged away
   std::size_t verticesRemoved = 0;         ///< inserted vertices deleted by the two above
   std::size_t facesRemoved = 0;            ///< faces deleted by the two above
+  std::size_t flattenedVertices = 0;       ///< left whole, rough: vertices of planes flattened
 };
 
 /// Extended method: segmentation and zone labelling.
@@ -204,18 +205,25 @@ inline void formatGuards(std::ostream &s, const SharpenReport &r) {
   if (r.extendedMethod) s << ", " << r.intersections.zoneReverted << " zone vertices reverted";
   s << " (" << r.intersections.rounds << " rounds), " << r.intersections.remaining
     << " left as they are (they intersect at rest too)\n";
-  if (r.evidenceGuard)
-    s << "evidence: " << r.evidence.weakFeatures << " of " << r.evidence.features
-      << " features left as they were (" << r.evidence.reverted << " inserted and "
-      << r.evidence.zoneReverted << " zone vertices sent back); "
-      << int(std::lround(100 * r.evidence.refusedFraction)) << "% of the moves refused (bound "
-      << int(std::lround(100 * r.evidence.refusedBound)) << "%), "
-      << "median lift " << std::lround(100 * r.evidence.medianLift) / 100.0 << ", noise "
-      << std::lround(1000 * r.evidence.noiseSpacings) / 1000.0 << " spacings, "
-      << int(std::lround(100 * r.evidence.planarFraction)) << "% of the area on planes"
-      << (r.evidence.wholeMeshLeft ? ": too little evidence, the mesh is left as it was" : "")
-      << "; " << r.evidence.facesGivenBack << " split faces at rest given back their input face, "
-      << r.evidence.restingVerticesRemoved << " other inserted vertices at rest removed\n";
+  if (!r.evidenceGuard) return;
+  const char *verdict = !r.evidence.wholeMeshLeft ? ""
+                        : r.evidence.flattenedVertices == 0
+                            ? ": too little evidence, the mesh is left as it was"
+                            : ": too little evidence, no feature sharpened";
+  s << "evidence: " << r.evidence.weakFeatures << " of " << r.evidence.features
+    << " features left as they were (" << r.evidence.reverted << " inserted and "
+    << r.evidence.zoneReverted << " zone vertices sent back); "
+    << int(std::lround(100 * r.evidence.refusedFraction)) << "% of the moves refused (bound "
+    << int(std::lround(100 * r.evidence.refusedBound)) << "%), "
+    << "median lift " << std::lround(100 * r.evidence.medianLift) / 100.0 << ", noise "
+    << std::lround(1000 * r.evidence.noiseSpacings) / 1000.0 << " spacings, "
+    << int(std::lround(100 * r.evidence.planarFraction)) << "% of the area on planes" << verdict
+    << "; ";
+  if (r.evidence.flattenedVertices > 0)
+    s << r.evidence.flattenedVertices
+      << " vertices of the rough input's planar regions flattened onto their planes; ";
+  s << r.evidence.facesGivenBack << " split faces at rest given back their input face, "
+    << r.evidence.restingVerticesRemoved << " other inserted vertices at rest removed\n";
 }
 
 }  // namespace detail

@@ -146,6 +146,21 @@ void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
   reportProgress(opt, 100, "Edge-Sharpener: done");
 }
 
+/// Auto method, on a rough input (a fused scan: its noise above the smooth
+/// bound) left whole: the vertices of its planar regions onto their planes
+/// (flattenPlanarRegions, within kFlattenMaxSpacings). \return the number
+/// moved.
+template <class MeshType>
+std::size_t flattenRoughPlanes(MeshType &m, const FeatureZones &zones,
+                               const SurfaceMeasures &surface, const SharpenOptions &opt) {
+  if (!opt.flattenRoughPlanes || zones.support.regionPlanes.empty() ||
+      !(surface.noiseSpacings > opt.maxSmoothNoiseSpacings))
+    return 0;
+  const double spacing = spacingUnit(zones.support);
+  return flattenPlanarRegions(m, zones, zones.support.regionPlanes, kFlattenMinSpacings * spacing,
+                              kFlattenMaxSpacings * spacing, outwardSign(m));
+}
+
 template <class MeshType>
 SharpenReport validate(MeshType &m, const SharpenOptions &opt) {
   vcg::tri::RequireFFAdjacency(m);
@@ -230,6 +245,8 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
         InputFaces<MeshType>::dissolveRestingEdgeVertices(m, moves);
     report.evidence.verticesRemoved = std::size_t(verticesBefore - m.vn);
     report.evidence.facesRemoved = std::size_t(facesBefore - m.fn);
+    if (report.evidence.wholeMeshLeft)
+      report.evidence.flattenedVertices = detail::flattenRoughPlanes(m, zones, surface, opt);
   }
   detail::finish(m, labels, opt, report);
   return report;

@@ -220,4 +220,51 @@ std::vector<Plane> planarRegionPlanes(const MeshType &m, const VertexFaceTable &
   return plane;
 }
 
+/// How far flattenPlanarRegions moves a vertex at most, in sample spacings:
+/// a scan's bulge beside an edge; a vertex farther off is the region's own
+/// shape. A vertex nearer its plane than the least move lies on it (the
+/// fit's rounding on an exact mesh): it stays.
+inline constexpr double kFlattenMaxSpacings = 1.0;
+inline constexpr double kFlattenMinSpacings = 1e-3;
+
+/// +1 when the faces of the closed mesh `m` face outwards (its signed
+/// volume is positive), else -1: the side of a plane that is outside.
+template <class MeshType>
+int outwardSign(const MeshType &m) {
+  double volume6 = 0;
+  for (const auto &f : m.face)
+    if (!f.IsD()) volume6 += positionOf(f.cV(0)) * (positionOf(f.cV(1)) ^ positionOf(f.cV(2)));
+  return volume6 >= 0 ? 1 : -1;
+}
+
+/// Moves each vertex of a region that is a plane (`regionPlanes`, from
+/// planarRegionPlanes; zero normal: not a plane) onto that plane when it lies
+/// outside it (on the side its normal times `outward` points to: outwardSign)
+/// by more than `minMove` and at most `maxMove`. A fused scan (a TSDF)
+/// inflates its planes and bulges them outwards for a few samples beside
+/// every edge; the regions' cores fix the planes. A vertex inside its plane
+/// stays: a convex blend or bevel lies inside the planes it joins. So do
+/// vertices of several regions or of the zone, and vertices farther off (the
+/// region's own shape). \return the number moved.
+template <class MeshType>
+std::size_t flattenPlanarRegions(MeshType &m, const FeatureZones &zones,
+                                 const std::vector<Plane> &regionPlanes, double minMove,
+                                 double maxMove, int outward) {
+  using Scalar = typename MeshType::ScalarType;
+  std::size_t moved = 0;
+  for (std::size_t v = 0; v < zones.vertexLabel.size() && v < m.vert.size(); ++v) {
+    const int r = zones.vertexLabel[v];
+    if (m.vert[v].IsD() || !zones.inRegion[v] || r < 0 || std::size_t(r) >= regionPlanes.size())
+      continue;
+    const Plane &pl = regionPlanes[std::size_t(r)];
+    if (pl.normal.SquaredNorm() == 0) continue;
+    const Vec3 p = positionOf(&m.vert[v]);
+    const double offset = pl.normal * (p - pl.point);
+    if (!(outward * offset > minMove && std::abs(offset) <= maxMove)) continue;
+    m.vert[v].P() = vcg::Point3<Scalar>::Construct(p - pl.normal * offset);
+    ++moved;
+  }
+  return moved;
+}
+
 }  // namespace edge_sharpener
