@@ -561,7 +561,10 @@ PYBIND11_MODULE(_edge_sharpener, m) {
       "sharpen(vertices, faces, *, progress=None, **options) -> (vertices, faces, report)\n\n" +
       wrapped(
           "Detects chamfers and corners and sharpens them. Original vertices keep their "
-          "index and position; inserted vertices follow them. Returns new arrays: vertices "
+          "index (with the paper method also their position: the others move the feature "
+          "zone's vertices onto their planes, and the auto method flattens the planar faces "
+          "of a rough input it leaves whole); inserted vertices follow them. Returns new "
+          "arrays: vertices "
           "(n', 3) of the input's float dtype, faces (m', 3) int64, and `report`, a dict with "
           "the content of the CLI's --json report (each stage's counts, 'options' as used, "
           "'seconds'); with colorize=True it also holds 'colors': {'faces': (m', 4) uint8 "
