@@ -284,9 +284,10 @@ inline const std::vector<OptionSpec> &optionTable() {
        T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_REAL(minPlanarAreaFraction)},
       {"flatten_rough_planes", "--keep-rough-planes", "", "Flatten a rough input's planes",
-       "Auto method: on a rough input (a fused scan; see --smooth-noise), the vertices of every "
-       "region that is a plane in its core move onto that plane first, within one sample "
-       "spacing: a scan's fusion bulges its planes beside each edge.",
+       "Auto method: on a rough input (a fused scan; see --smooth-noise) left whole for weak "
+       "evidence, the vertices of every region that is a plane in its core and that lie "
+       "outside that plane, by at most one sample spacing, move onto it: a scan's fusion "
+       "bulges its planes outwards beside each edge (off with --local-planes-only too).",
        T::Flag, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_FLAG(flattenRoughPlanes)},
       {"min_median_lift", "--min-lift", "", "Minimum median lift",

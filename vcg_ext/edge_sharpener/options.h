@@ -167,11 +167,12 @@ struct SharpenOptions {
   /// 0: no input counts as smooth.
   double maxSmoothNoiseSpacings = 0.018;
   double minPlanarAreaFraction = 0.3;
-  /// On a rough input (noise above `maxSmoothNoiseSpacings`: a fused scan),
-  /// the vertices of every region that is a plane in its core move onto that
-  /// plane first, within one sample spacing (planar_regions.h:
-  /// flattenPlanarRegions): a scan's fusion bulges its planes for a few
-  /// samples beside each edge, where the planes placement fits would lean.
+  /// On a rough input (noise above `maxSmoothNoiseSpacings`: a fused scan)
+  /// that the evidence guard leaves whole, the vertices of every region that
+  /// is a plane in its core and that lie outside that plane, by at most one
+  /// sample spacing, move onto it (planar_regions.h: flattenPlanarRegions):
+  /// a scan's fusion bulges its planes outwards for a few samples beside each
+  /// edge. Uses the planar regions' planes (`regionPlanes`: off with it).
   bool flattenRoughPlanes = true;
   /// A feature goes back to rest whole when more than this fraction of its
   /// inserted vertices were refused by the other tests or moved across to
