@@ -173,6 +173,23 @@ TEST(Convexity, SymmetricInSwappingTheEndpoints) {
   }
 }
 
+// Where the top (z = 1) meets the side x = 1 of the unit cube, the top's
+// face is the part of its plane on the side's inner side; where a floor
+// (z = 0) meets a wall rising from x = 1, the floor's face is the part on
+// the wall's outer side. Either way the top's or floor's own samples tell.
+TEST(OnSideOf, ThePartOfAPlaneThatIsTheFaceIsWhereItsSamplesLie) {
+  const Plane side{Vec3(1, 0, 0.5), Vec3(1, 0, 0)};
+  const Vec3 topSample(0.7, 0.2, 1);
+  EXPECT_TRUE(es::onSideOf(side, Vec3(0.95, 0, 1), topSample));
+  EXPECT_FALSE(es::onSideOf(side, Vec3(1.05, 0, 1), topSample));
+  const Plane wall{Vec3(1, 0, 0.5), Vec3(-1, 0, 0)};
+  const Vec3 floorSample(1.4, 0.2, 0);
+  EXPECT_TRUE(es::onSideOf(wall, Vec3(1.05, 0, 0), floorSample));
+  EXPECT_FALSE(es::onSideOf(wall, Vec3(0.95, 0, 0), floorSample));
+  EXPECT_TRUE(es::onSideOf(wall, Vec3(1, 0.3, 0), floorSample));      // on the plane
+  EXPECT_FALSE(es::onSideOf(wall, Vec3(1.05, 0, 0), Vec3(1, 0, 0)));  // no side to follow
+}
+
 TEST(TriangleAngles, EquilateralAndDegenerate) {
   const Vec3 a(0, 0, 0), b(1, 0, 0), c(0.5, std::sqrt(3.0) / 2, 0);
   EXPECT_NEAR(es::minTriangleAngle(a, b, c), 60 * kDeg, 1e-12);

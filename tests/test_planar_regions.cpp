@@ -206,32 +206,41 @@ TEST(PlanarRegions, OutwardSignFollowsTheFacesOrientation) {
   EXPECT_EQ(es::outwardSign(m), -1);
 }
 
-// A rough input's planar regions (flattenPlanarRegions): of the flat
-// region's vertices, one raised above its plane (outside: the height
-// field's faces face +z) within the bound goes back onto it; one lowered
-// (inside, as a convex blend lies) and one raised beyond the bound stay, and
-// so does a zone vertex, raised as much as the first.
-TEST(PlanarRegions, FlatteningMovesOnlyVerticesJustOutsideTheirPlane) {
+// A rough input's planar regions (flattenPlanarRegions): of the vertices
+// labelled with the flat region, one of its own raised above its plane
+// (outside: the height field's faces face +z) within the bound goes back onto
+// it, and so does a zone vertex raised as much; one lowered (inside, as a
+// convex blend lies) and one raised beyond the bound stay, and so does a
+// vertex given the flat region's label past the edge: its place on the flat
+// plane lies beyond the slope's plane, off the flat face.
+TEST(PlanarRegions, FlatteningMovesOnlyVerticesJustOutsideTheirPlaneOntoItsFace) {
   EdgeField t(0.0);
-  ASSERT_TRUE(t.planar(0));
+  ASSERT_TRUE(t.planar(0) && t.planar(1));
   const auto at = [](int i, int j) { return std::size_t(j * (kNx + 1) + i); };
-  const std::size_t raised = at(5, 8), lowered = at(8, 8), far = at(11, 8), zone = at(19, 8);
+  const std::size_t raised = at(5, 8), lowered = at(8, 8), far = at(11, 8), zone = at(19, 8),
+                    pastEdge = at(21, 8);
   ASSERT_TRUE(t.zones.inRegion[raised] && t.zones.inRegion[lowered] && t.zones.inRegion[far]);
-  ASSERT_FALSE(t.zones.inRegion[zone]);
+  ASSERT_FALSE(t.zones.inRegion[zone] || t.zones.inRegion[pastEdge]);
+  ASSERT_EQ(t.zones.vertexLabel[zone], 0);
+  t.zones.vertexLabel[pastEdge] = 0;
   t.m.vert[raised].P()[2] += 0.05;
   t.m.vert[lowered].P()[2] -= 0.05;
   t.m.vert[far].P()[2] += 0.15;
   t.m.vert[zone].P()[2] += 0.05;
+  t.m.vert[pastEdge].P()[2] = 0.05;
   const double maxMove = kH;  // one sample spacing
-  EXPECT_EQ(es::flattenPlanarRegions(t.m, t.zones, t.zones.support.regionPlanes, 1e-6, maxMove, 1),
-            1u);
+  EXPECT_EQ(es::flattenPlanarRegions(t.m, es::VertexFaceTable(t.m), t.zones,
+                                     t.zones.support.regionPlanes, 1e-6, maxMove, 1),
+            2u);
   EXPECT_NEAR(t.m.vert[raised].P()[2], 0, 1e-6);
+  EXPECT_NEAR(t.m.vert[zone].P()[2], 0, 1e-6);
   EXPECT_NEAR(t.m.vert[lowered].P()[2], -0.05, 1e-6);
   EXPECT_NEAR(t.m.vert[far].P()[2], 0.15, 1e-6);
-  EXPECT_NEAR(t.m.vert[zone].P()[2], 0.05, 1e-6);
+  EXPECT_NEAR(t.m.vert[pastEdge].P()[2], 0.05, 1e-6);
   // Facing the other way, the lowered vertex is the one outside.
   t.m.vert[raised].P()[2] += 0.05;
-  EXPECT_EQ(es::flattenPlanarRegions(t.m, t.zones, t.zones.support.regionPlanes, 1e-6, maxMove, -1),
+  EXPECT_EQ(es::flattenPlanarRegions(t.m, es::VertexFaceTable(t.m), t.zones,
+                                     t.zones.support.regionPlanes, 1e-6, maxMove, -1),
             1u);
   EXPECT_NEAR(t.m.vert[raised].P()[2], 0.05, 1e-6);
   EXPECT_NEAR(t.m.vert[lowered].P()[2], 0, 1e-6);

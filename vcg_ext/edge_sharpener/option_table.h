@@ -285,8 +285,9 @@ inline const std::vector<OptionSpec> &optionTable() {
        ES_REAL(minPlanarAreaFraction)},
       {"flatten_rough_planes", "--keep-rough-planes", "", "Flatten a rough input's planes",
        "Auto method: on a rough input (a fused scan; see --smooth-noise) left whole for weak "
-       "evidence, the vertices of every region that is a plane in its core and that lie "
-       "outside that plane, by at most one sample spacing, move onto it: a scan's fusion "
+       "evidence, the vertices of each region that is a plane in its core, and the feature "
+       "zone's vertices labelled with it, that lie outside that plane by at most two sample "
+       "spacings move onto it where that place is on the region's face: a scan's fusion "
        "bulges its planes outwards beside each edge (off with --local-planes-only too).",
        T::Flag, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_FLAG(flattenRoughPlanes)},

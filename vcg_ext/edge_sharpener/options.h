@@ -168,11 +168,13 @@ struct SharpenOptions {
   double maxSmoothNoiseSpacings = 0.018;
   double minPlanarAreaFraction = 0.3;
   /// On a rough input (noise above `maxSmoothNoiseSpacings`: a fused scan)
-  /// that the evidence guard leaves whole, the vertices of every region that
-  /// is a plane in its core and that lie outside that plane, by at most one
-  /// sample spacing, move onto it (planar_regions.h: flattenPlanarRegions):
-  /// a scan's fusion bulges its planes outwards for a few samples beside each
-  /// edge. Uses the planar regions' planes (`regionPlanes`: off with it).
+  /// that the evidence guard leaves whole, the vertices labelled with a
+  /// region that is a plane in its core (its own and its zone's) that lie
+  /// outside that plane, by at most kFlattenMaxSpacings, move onto it where
+  /// that place is on the region's face (planar_regions.h:
+  /// flattenPlanarRegions): a scan's fusion bulges its planes outwards for a
+  /// few samples beside each edge. Uses the planar regions' planes
+  /// (`regionPlanes`: off with it).
   bool flattenRoughPlanes = true;
   /// A feature goes back to rest whole when more than this fraction of its
   /// inserted vertices were refused by the other tests or moved across to

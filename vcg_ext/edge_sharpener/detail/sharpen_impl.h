@@ -147,9 +147,9 @@ void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
 }
 
 /// Auto method, on a rough input (a fused scan: its noise above the smooth
-/// bound) left whole: the vertices of its planar regions onto their planes
-/// (flattenPlanarRegions, within kFlattenMaxSpacings). \return the number
-/// moved.
+/// bound) left whole: the vertices labelled with its planar regions onto
+/// their planes, on the regions' faces (flattenPlanarRegions, within
+/// kFlattenMaxSpacings). \return the number moved.
 template <class MeshType>
 std::size_t flattenRoughPlanes(MeshType &m, const FeatureZones &zones,
                                const SurfaceMeasures &surface, const SharpenOptions &opt) {
@@ -157,8 +157,9 @@ std::size_t flattenRoughPlanes(MeshType &m, const FeatureZones &zones,
       !(surface.noiseSpacings > opt.maxSmoothNoiseSpacings))
     return 0;
   const double spacing = spacingUnit(zones.support);
-  return flattenPlanarRegions(m, zones, zones.support.regionPlanes, kFlattenMinSpacings * spacing,
-                              kFlattenMaxSpacings * spacing, outwardSign(m));
+  return flattenPlanarRegions(m, VertexFaceTable(m), zones, zones.support.regionPlanes,
+                              kFlattenMinSpacings * spacing, kFlattenMaxSpacings * spacing,
+                              outwardSign(m));
 }
 
 template <class MeshType>

@@ -6,6 +6,7 @@
 // (placement.h: detail::onRegionPlanes).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -224,7 +225,7 @@ std::vector<Plane> planarRegionPlanes(const MeshType &m, const VertexFaceTable &
 /// a scan's bulge beside an edge; a vertex farther off is the region's own
 /// shape. A vertex nearer its plane than the least move lies on it (the
 /// fit's rounding on an exact mesh): it stays.
-inline constexpr double kFlattenMaxSpacings = 1.0;
+inline constexpr double kFlattenMaxSpacings = 2.0;
 inline constexpr double kFlattenMinSpacings = 1e-3;
 
 /// +1 when the faces of the closed mesh `m` face outwards (its signed
@@ -237,34 +238,109 @@ int outwardSign(const MeshType &m) {
   return volume6 >= 0 ? 1 : -1;
 }
 
-/// Moves each vertex of a region that is a plane (`regionPlanes`, from
-/// planarRegionPlanes; zero normal: not a plane) onto that plane when it lies
-/// outside it (on the side its normal times `outward` points to: outwardSign)
-/// by more than `minMove` and at most `maxMove`. A fused scan (a TSDF)
+/// How many rings of vertices around a vertex flattenPlanarRegions reads for
+/// its region's own samples and for the other regions' planes.
+inline constexpr int kFlattenRings = 3;
+
+namespace detail {
+
+/// The vertices within `rings` rings of v (v first), through the faces of
+/// `vf`. `mark` (one entry per vertex) and `stamp` (new for every call) keep
+/// each vertex once without clearing.
+template <class MeshType>
+void verticesAround(const MeshType &m, const VertexFaceTable &vf, std::size_t v, int rings,
+                    std::vector<std::uint32_t> &mark, std::uint32_t stamp,
+                    std::vector<std::uint32_t> &out) {
+  out.assign(1, std::uint32_t(v));
+  mark[v] = stamp;
+  std::size_t ringBegin = 0;
+  for (int ring = 0; ring < rings; ++ring) {
+    const std::size_t ringEnd = out.size();
+    for (std::size_t i = ringBegin; i < ringEnd; ++i)
+      for (const std::uint32_t *fi = vf.begin(out[i]); fi != vf.end(out[i]); ++fi)
+        for (int k = 0; k < 3; ++k) {
+          const auto u = std::uint32_t(vcg::tri::Index(m, m.face[*fi].cV(k)));
+          if (mark[u] != stamp) mark[u] = stamp, out.push_back(u);
+        }
+    ringBegin = ringEnd;
+  }
+}
+
+/// The vertices zones labels (a vertex added since has no label).
+template <class MeshType>
+std::size_t labelledVertices(const MeshType &m, const FeatureZones &zones) {
+  return std::min({zones.vertexLabel.size(), zones.inRegion.size(), m.vert.size()});
+}
+
+inline bool isPlane(const std::vector<Plane> &regionPlanes, int r) {
+  return r >= 0 && std::size_t(r) < regionPlanes.size() &&
+         regionPlanes[std::size_t(r)].normal.SquaredNorm() > 0;
+}
+
+/// Whether `target`, on region r's plane, lies on the region's face: on the
+/// side of every other planar region's plane labelling a vertex of `around`
+/// where region r's own vertices of `around` lie (their centre). False when
+/// `around` holds none of them.
+template <class MeshType>
+bool onRegionFace(const MeshType &m, const FeatureZones &zones,
+                  const std::vector<Plane> &regionPlanes, int r, const Vec3 &target,
+                  const std::vector<std::uint32_t> &around) {
+  const std::size_t nv = labelledVertices(m, zones);
+  Vec3 ownSum(0, 0, 0);
+  int own = 0;
+  for (const std::uint32_t u : around)
+    if (u < nv && zones.inRegion[u] && zones.vertexLabel[u] == r)
+      ownSum += positionOf(&m.vert[u]), ++own;
+  if (own == 0) return false;
+  const Vec3 ownCentre = ownSum / double(own);
+  for (const std::uint32_t u : around) {
+    const int other = u < nv ? zones.vertexLabel[u] : kZone;
+    if (other != r && isPlane(regionPlanes, other) &&
+        !onSideOf(regionPlanes[std::size_t(other)], target, ownCentre))
+      return false;
+  }
+  return true;
+}
+
+}  // namespace detail
+
+/// Moves each vertex labelled with a region that is a plane (`regionPlanes`,
+/// from planarRegionPlanes; zero normal: not a plane), a region's own vertex
+/// or a zone vertex, onto that plane when it lies outside it (on the side its
+/// normal times `outward` points to: outwardSign) by more than `minMove` and
+/// at most `maxMove`, and when the point it moves to is on the region's face:
+/// on the side of every other region's plane nearby (kFlattenRings) where the
+/// region's own vertices nearby lie (onSideOf). A fused scan (a TSDF)
 /// inflates its planes and bulges them outwards for a few samples beside
 /// every edge; the regions' cores fix the planes. A vertex inside its plane
 /// stays: a convex blend or bevel lies inside the planes it joins. So do
-/// vertices of several regions or of the zone, and vertices farther off (the
-/// region's own shape). \return the number moved.
+/// vertices of several regions, vertices with none of their region's own
+/// vertices nearby and vertices farther off (the region's own shape).
+/// Decided on the positions as they were. `vf`: the faces of each vertex of
+/// `m` as it is. \return the number moved.
 template <class MeshType>
-std::size_t flattenPlanarRegions(MeshType &m, const FeatureZones &zones,
+std::size_t flattenPlanarRegions(MeshType &m, const VertexFaceTable &vf, const FeatureZones &zones,
                                  const std::vector<Plane> &regionPlanes, double minMove,
                                  double maxMove, int outward) {
   using Scalar = typename MeshType::ScalarType;
-  std::size_t moved = 0;
-  for (std::size_t v = 0; v < zones.vertexLabel.size() && v < m.vert.size(); ++v) {
+  const std::size_t nv = detail::labelledVertices(m, zones);
+  std::vector<std::pair<std::size_t, Vec3>> moves;
+  std::vector<std::uint32_t> mark(m.vert.size(), 0), around;
+  std::uint32_t stamp = 0;
+  for (std::size_t v = 0; v < nv; ++v) {
     const int r = zones.vertexLabel[v];
-    if (m.vert[v].IsD() || !zones.inRegion[v] || r < 0 || std::size_t(r) >= regionPlanes.size())
-      continue;
+    if (m.vert[v].IsD() || !detail::isPlane(regionPlanes, r)) continue;
     const Plane &pl = regionPlanes[std::size_t(r)];
-    if (pl.normal.SquaredNorm() == 0) continue;
     const Vec3 p = positionOf(&m.vert[v]);
     const double offset = pl.normal * (p - pl.point);
     if (!(outward * offset > minMove && std::abs(offset) <= maxMove)) continue;
-    m.vert[v].P() = vcg::Point3<Scalar>::Construct(p - pl.normal * offset);
-    ++moved;
+    const Vec3 target = p - pl.normal * offset;
+    detail::verticesAround(m, vf, v, kFlattenRings, mark, ++stamp, around);
+    if (detail::onRegionFace(m, zones, regionPlanes, r, target, around))
+      moves.emplace_back(v, target);
   }
-  return moved;
+  for (const auto &[v, target] : moves) m.vert[v].P() = vcg::Point3<Scalar>::Construct(target);
+  return moves.size();
 }
 
 }  // namespace edge_sharpener

@@ -235,6 +235,15 @@ inline bool hasCoincidentCorners(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
   return std::min({ab, bc, ca}) <= 1e-5 * std::max({ab, bc, ca});
 }
 
+/// Whether `p` lies on `plane` or on the side of it where `reference` lies.
+/// Where two planes meet, the part of one plane that is the surface lies on
+/// the other plane's side where that face's own samples lie, convex edge or
+/// concave.
+inline bool onSideOf(const Plane &plane, const Vec3 &p, const Vec3 &reference) {
+  const double side = plane.normal * (p - plane.point);
+  return side == 0 || side * (plane.normal * (reference - plane.point)) > 0;
+}
+
 /// Interior angle at vertex `a` of triangle abc (the paper's weight).
 inline double cornerAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
   return angleBetween(b - a, c - a);
