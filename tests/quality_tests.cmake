@@ -46,6 +46,11 @@
 #                               input's planar faces flattened onto their planes, its features
 #                               left; RMS factors against floors, none made worse (skipped
 #                               without Open3D).
+#   quality.raised_features     a slab with bosses and ribs 1-3 scan voxels high (authored by
+#                               the checker), scanned (TSDF, noise 0 and 0.2 voxel): its
+#                               planar faces flattened, the raised features kept (their
+#                               reference samples no farther), whole RMS against a floor
+#                               (skipped without Open3D).
 # The full benchmark (docs/results.md) is scripts/bench-quality.sh, not a test.
 # All exit 77 (skipped) when MeshLab or python3 is not installed, fandisk_targets and
 # long_move also without ../shared. Run: ctest -L quality
@@ -53,5 +58,5 @@ edge_sharpener_meshlab_script_tests(quality
   fast_subset 900  hausdorff_crosscheck 600  hausdorff_meshlab_mode 600  families_subset 900
   fandisk_targets 900  cad_as_is 600  thin_wall 600  smooth_planes 600  on_plane 600
   long_move 600  saddle_corners 600  mostly_on_planes 600  bend_with_feature 600
-  region_planes 600  rough_planes 600
+  region_planes 600  rough_planes 600  raised_features 600
   ENVIRONMENT "ES_BUILD_DIR=${CMAKE_BINARY_DIR}")
