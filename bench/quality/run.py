@@ -24,7 +24,10 @@ Python 3 standard library only; the figures need matplotlib (Debian python3-matp
 and are skipped with a note without it.
 
   bench/quality/run.py --build BUILD_DIR [--fast] [--models a,b] [--inputs umr,ier] [--jobs N]
-                       [--cache DIR] [--refresh]
+                       [--cache DIR] [--refresh] [--distance-samples N]
+
+A worse output of the default method is measured again with DENSE_SAMPLES, with its input
+(the sampled max only under-reads; docs/results.md, "How exact the sampled max is").
 """
 import argparse
 import concurrent.futures
