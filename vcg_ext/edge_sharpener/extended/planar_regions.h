@@ -244,28 +244,6 @@ inline constexpr int kFlattenRings = 3;
 
 namespace detail {
 
-/// The vertices within `rings` rings of v (v first), through the faces of
-/// `vf`. `mark` (one entry per vertex) and `stamp` (new for every call) keep
-/// each vertex once without clearing.
-template <class MeshType>
-void verticesAround(const MeshType &m, const VertexFaceTable &vf, std::size_t v, int rings,
-                    std::vector<std::uint32_t> &mark, std::uint32_t stamp,
-                    std::vector<std::uint32_t> &out) {
-  out.assign(1, std::uint32_t(v));
-  mark[v] = stamp;
-  std::size_t ringBegin = 0;
-  for (int ring = 0; ring < rings; ++ring) {
-    const std::size_t ringEnd = out.size();
-    for (std::size_t i = ringBegin; i < ringEnd; ++i)
-      for (const std::uint32_t *fi = vf.begin(out[i]); fi != vf.end(out[i]); ++fi)
-        for (int k = 0; k < 3; ++k) {
-          const auto u = std::uint32_t(vcg::tri::Index(m, m.face[*fi].cV(k)));
-          if (mark[u] != stamp) mark[u] = stamp, out.push_back(u);
-        }
-    ringBegin = ringEnd;
-  }
-}
-
 /// The vertices zones labels (a vertex added since has no label).
 template <class MeshType>
 std::size_t labelledVertices(const MeshType &m, const FeatureZones &zones) {
@@ -284,16 +262,16 @@ inline bool isPlane(const std::vector<Plane> &regionPlanes, int r) {
 template <class MeshType>
 bool onRegionFace(const MeshType &m, const FeatureZones &zones,
                   const std::vector<Plane> &regionPlanes, int r, const Vec3 &target,
-                  const std::vector<std::uint32_t> &around) {
+                  const std::vector<std::size_t> &around) {
   const std::size_t nv = labelledVertices(m, zones);
   Vec3 ownSum(0, 0, 0);
   int own = 0;
-  for (const std::uint32_t u : around)
+  for (const std::size_t u : around)
     if (u < nv && zones.inRegion[u] && zones.vertexLabel[u] == r)
       ownSum += positionOf(&m.vert[u]), ++own;
   if (own == 0) return false;
   const Vec3 ownCentre = ownSum / double(own);
-  for (const std::uint32_t u : around) {
+  for (const std::size_t u : around) {
     const int other = u < nv ? zones.vertexLabel[u] : kZone;
     if (other != r && isPlane(regionPlanes, other) &&
         !onSideOf(regionPlanes[std::size_t(other)], target, ownCentre))
@@ -325,8 +303,9 @@ std::size_t flattenPlanarRegions(MeshType &m, const VertexFaceTable &vf, const F
   using Scalar = typename MeshType::ScalarType;
   const std::size_t nv = detail::labelledVertices(m, zones);
   std::vector<std::pair<std::size_t, Vec3>> moves;
-  std::vector<std::uint32_t> mark(m.vert.size(), 0), around;
-  std::uint32_t stamp = 0;
+  std::vector<std::uint32_t> mark(m.vert.size(), 0);
+  std::vector<std::size_t> around, ring, next;
+  std::uint32_t walk = 0;
   for (std::size_t v = 0; v < nv; ++v) {
     const int r = zones.vertexLabel[v];
     if (m.vert[v].IsD() || !detail::isPlane(regionPlanes, r)) continue;
@@ -335,7 +314,12 @@ std::size_t flattenPlanarRegions(MeshType &m, const VertexFaceTable &vf, const F
     const double offset = pl.normal * (p - pl.point);
     if (!(outward * offset > minMove && std::abs(offset) <= maxMove)) continue;
     const Vec3 target = p - pl.normal * offset;
-    detail::verticesAround(m, vf, v, kFlattenRings, mark, ++stamp, around);
+    around.assign(1, v);
+    detail::forEachRing(m, vf, v, kFlattenRings, mark, ++walk, ring, next,
+                        [&](const auto &ringVertices) {
+                          around.insert(around.end(), ringVertices.begin(), ringVertices.end());
+                          return true;
+                        });
     if (detail::onRegionFace(m, zones, regionPlanes, r, target, around))
       moves.emplace_back(v, target);
   }

@@ -75,24 +75,15 @@ void collectNearbyRegions(const MeshType &m, const VertexFaceTable &vf, FeatureZ
       const std::uint32_t v = withPlane[k];
       auto &found = support.nearby[v];
       int n = 0;
-      frontier.assign(1, v);
-      stamp[v] = v;
-      for (int ring = 0; ring < rings && n < 3; ++ring) {
-        next.clear();
-        for (std::size_t w : frontier)
-          detail::forEachNeighbour(m, vf, w, [&](std::size_t u) {
-            if (stamp[u] == v) return;
-            stamp[u] = v;
-            next.push_back(u);
-          });
-        for (std::size_t u : next) {
+      detail::forEachRing(m, vf, v, rings, stamp, v, frontier, next, [&](const auto &ring) {
+        for (std::size_t u : ring) {
           if (n == 3 || !hasPlane(u) || support.region[u] == support.region[v]) continue;
           bool known = false;
           for (int i = 0; i < n; ++i) known |= support.region[found[i]] == support.region[u];
           if (!known) found[n++] = std::uint32_t(u);
         }
-        frontier.swap(next);
-      }
+        return n < 3;
+      });
     }
   }
 }

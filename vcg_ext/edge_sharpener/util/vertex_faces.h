@@ -106,6 +106,30 @@ void forEachNeighbour(const MeshType &m, const VertexFaceTable &vf, std::size_t 
     }
 }
 
+/// Walks the rings of vertices around v (through its faces in `vf`): calls
+/// visitRing(ring) with each ring's vertices, the nearest ring first, until
+/// `rings` rings are visited or visitRing returns false. A vertex u counts as
+/// seen when mark[u] == seen (v's entry is set first), so a caller reuses
+/// `mark` between walks with a new `seen`; `frontier` and `next` are buffers.
+template <class MeshType, class Mark, class VisitRing>
+void forEachRing(const MeshType &m, const VertexFaceTable &vf, std::size_t v, int rings,
+                 std::vector<Mark> &mark, Mark seen, std::vector<std::size_t> &frontier,
+                 std::vector<std::size_t> &next, VisitRing &&visitRing) {
+  frontier.assign(1, v);
+  mark[v] = seen;
+  for (int ring = 0; ring < rings; ++ring) {
+    next.clear();
+    for (const std::size_t w : frontier)
+      forEachNeighbour(m, vf, w, [&](std::size_t u) {
+        if (mark[u] == seen) return;
+        mark[u] = seen;
+        next.push_back(u);
+      });
+    if (!visitRing(next)) return;
+    frontier.swap(next);
+  }
+}
+
 }  // namespace detail
 
 }  // namespace edge_sharpener
