@@ -198,6 +198,34 @@ TEST(OnRegionPlanes, NotFartherThanOneSampleSpacing) {
   EXPECT_GT((t.placed() - kOnOwnPlanes).Norm(), t.support.sampleSpacing);
 }
 
+namespace {
+
+/// Source 0's fit turned by `turnDeg` about the edge's direction, through a
+/// point beside its region's plane z = 0: the fits meet 0.013-0.02 from the
+/// own planes' line, within a sample spacing of 0.1.
+TwoSources withSource0FitTurned(double turnDeg) {
+  TwoSources t(0.05, 0.1);
+  const double turn = turnDeg * M_PI / 180.0;
+  t.support.setFit(0,
+                   es::SupportFit::of({Vec3(0.03, 0, 0), Vec3(std::sin(turn), 0, std::cos(turn))}));
+  return t;
+}
+
+}  // namespace
+
+// A fit turned 35 degrees from its region's plane lies on another surface
+// the region took in (a conical chamfer beside a flat top): the fits place
+// the vertex, not the region's core.
+TEST(OnRegionPlanes, NotWhereAFitTurnsFarFromItsRegionsPlane) {
+  const Vec3 placed = withSource0FitTurned(35).placed();
+  EXPECT_GT((placed - kOnOwnPlanes).Norm(), 0.01);
+}
+
+TEST(OnRegionPlanes, WhereAFitTurnsLessFromItsRegionsPlane) {
+  const Vec3 placed = withSource0FitTurned(25).placed();
+  EXPECT_LT((placed - kOnOwnPlanes).Norm(), 1e-9);
+}
+
 TEST(PlanarRegions, OutwardSignFollowsTheFacesOrientation) {
   es::Mesh m;
   es::hand_built::voxelSurface(m, {{0, 0, 0}}, 4);

@@ -277,11 +277,19 @@ namespace detail {
 /// See onRegionPlanes(): in sample spacings.
 constexpr double kMinShiftSpacings = 0.1;
 
+/// See onRegionPlanes(): a fitted plane turned farther than this from its
+/// region's own plane lies on another surface the region took in.
+constexpr double kOwnPlaneMaxTurnRad = 30.0 * M_PI / 180.0;
+
 /// Moves `target`, the placement between the planes fitted next to the
 /// feature, onto the sources' regions' own planes (SupportPlanes::
 /// regionPlanes) where every source's region is a plane and the placement
 /// between those planes lies more than kMinShiftSpacings and at most one
-/// sample spacing from `target` (the vetoes judged the move from there).
+/// sample spacing from `target` (the vetoes judged the move from there),
+/// and where each source's fitted plane turns by at most kOwnPlaneMaxTurnRad
+/// from its region's: a region can take in a second surface across a crease
+/// its sampling blurs (a nut's conical chamfer beside its flat top), and
+/// there the fit beside the feature, not the region's core, is the flank.
 /// Closer, the fits are as good, and exact planes would make faces along a
 /// concave edge coincide exactly, which the cleanup and the intersection
 /// guard then undo. Near a corner the fits next to a source see the third
@@ -300,7 +308,8 @@ inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes 
   Plane own[3];
   for (int i = 0; i < src.originalCount; ++i) {
     const Plane *p = ownPlane(support.region[src.original[i]]);
-    if (!p) return;
+    if (!p || angleBetween(p->normal, support.plane(src.original[i]).normal) > kOwnPlaneMaxTurnRad)
+      return;
     own[i] = *p;
   }
   // An edge vertex's two sources list up to three nearby regions each.
