@@ -8,7 +8,8 @@ the validation half fixed by bench/quality/split.json) it
      (Uniform Mesh Resampling at several cell sizes, Isotropic Explicit Remeshing with
      features off, CSG intersection = marching intersections, Screened Poisson from a point
      sampling), the feature-preserving competitor "Marching Cubes (RIMLS)" from the same
-     points, OpenVDB's voxel remesher (bench/samplers/vdb-remesh) and depth-camera scans fused
+     points, OpenVDB's voxel remesher (bench/samplers/vdb-remesh; also as Blender 3.4's
+     voxel remesh with Preserve Volume, vertices cast onto the input) and depth-camera scans fused
      in a TSDF (bench/samplers/tsdf_scan.py); they are cached in CACHE/inputs (a failure or
      time-out is cached and reported, not fatal);
   2. sharpens each with the edge-sharpener CLI (identical to the MeshLab filter): every
@@ -68,7 +69,7 @@ DENSE_SAMPLES = 1000000
 # The peer: MeshLab's stock filter, run on every input (not a variant of our CLI).
 PEER = "unsharp-mask"
 # Inputs made by the project's own sampler tools, not by meshlabserver: made in parallel.
-LOCAL_KINDS = ("vdb", "scan")
+LOCAL_KINDS = ("vdb", "vdbproj", "scan")
 SPLIT_FILE = os.path.join(HERE, "split.json")
 REAL_DIR = os.path.join(SOURCE, "test_meshes", "real")
 
@@ -104,6 +105,8 @@ INPUT_TITLES = {
     "poisson": "Screened Poisson from 100k points",
     "rimls": "Marching Cubes (RIMLS) from 100k points",
     "vdb": "OpenVDB volumeToMesh (voxel remesher, adaptivity 0, quads split)",
+    "vdbproj": "OpenVDB volumeToMesh as Blender 3.4's voxel remesh with Preserve Volume "
+               "(surface 0.3 voxel out, vertices cast along their normals onto the input)",
     "scan": "depth-camera scan: 26 depth views fused in a TSDF (voxel 1%)",
 }
 
@@ -117,6 +120,9 @@ def input_specs(fast):
         InputSpec("vdb", "2%", 0.02, 11),
         InputSpec("vdb", "1%", 0.01, 12),
         InputSpec("vdb", "0.5%", 0.005, 13),
+        InputSpec("vdbproj", "2%", 0.02, 17),
+        InputSpec("vdbproj", "1%", 0.01, 18),
+        InputSpec("vdbproj", "0.5%", 0.005, 19),
         InputSpec("scan", "noise 0", 0.0, 14),
         InputSpec("scan", "noise 0.1 voxel", 0.1, 15),
         InputSpec("scan", "noise 0.2 voxel", 0.2, 16),
@@ -439,15 +445,18 @@ def store_info(cache, key, info):
 
 
 def make_local_input(tools, model, spec, cache, refresh, timeout, key):
-    """An input made by the project's own sampler tools (OpenVDB remesher, TSDF scan)."""
+    """An input made by the project's own sampler tools (OpenVDB remesher, without or with
+    projection onto the input's surface; TSDF scan)."""
     hit = cached_info(cache, key, refresh)
     if hit is not None:
         return hit
     out = os.path.join(cache, "inputs", key + ".ply")
-    if spec.kind == "vdb":
+    if spec.kind in ("vdb", "vdbproj"):
         if tools.vdb is None:
             return None, {"status": "skipped", "why": "vdb-remesh not built (OpenVDB not installed)"}
         cmd = [tools.vdb, model.source, out, "--voxel-fraction", str(spec.res_value)]
+        if spec.kind == "vdbproj":
+            cmd.append("--project")
     else:
         if tools.scan_missing:
             return None, {"status": "skipped", "why": tools.scan_missing}
@@ -600,7 +609,7 @@ def main():
                     help="generated shapes only, UMR 1%% only, multiplier 2 (the CTest subset)")
     ap.add_argument("--models", help="comma-separated model names to run (default all)")
     ap.add_argument("--inputs", help="comma-separated input kinds to make (asis, umr, mc, ier, "
-                    "csg, poisson, rimls, vdb, scan; default all)")
+                    "csg, poisson, rimls, vdb, vdbproj, scan; default all)")
     ap.add_argument("--input-keys", help="comma-separated inputs by key, kind and resolution "
                     "as in the cache's file names (e.g. vdb_1pct,scan_noise0,umr_0.5pct)")
     ap.add_argument("--distance-sampling", choices=("meshlab", "uniform"), default="meshlab",
