@@ -105,6 +105,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"median_lift", r.evidence.medianLift},
                      {"noise_spacings", r.evidence.noiseSpacings},
                      {"planar_fraction", r.evidence.planarFraction},
+                     {"exact_sampling", r.evidence.exactSampling},
                      {"whole_mesh_left", r.evidence.wholeMeshLeft},
                      {"flattened_vertices", r.evidence.flattenedVertices},
                      {"faces_given_back", r.evidence.facesGivenBack},

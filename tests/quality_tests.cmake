@@ -51,6 +51,10 @@
 #                               planar faces flattened, the raised features kept (their
 #                               reference samples no farther), whole RMS against a floor
 #                               (skipped without Open3D).
+#   quality.exact_sampling      bevelled_block by OpenVDB as Blender's voxel remesh with
+#                               Preserve Volume at 1% and 0.5%: on a mesh sampled exactly its
+#                               designed bevels are kept; RMS factors against floors, none made
+#                               worse (skipped without OpenVDB).
 # The full benchmark (docs/results.md) is scripts/bench-quality.sh, not a test.
 # All exit 77 (skipped) when MeshLab or python3 is not installed, fandisk_targets and
 # long_move also without ../shared. Run: ctest -L quality
@@ -58,5 +62,5 @@ edge_sharpener_meshlab_script_tests(quality
   fast_subset 900  hausdorff_crosscheck 600  hausdorff_meshlab_mode 600  families_subset 900
   fandisk_targets 900  cad_as_is 600  thin_wall 600  smooth_planes 600  on_plane 600
   long_move 600  saddle_corners 600  mostly_on_planes 600  bend_with_feature 600
-  region_planes 600  rough_planes 600  raised_features 600
+  region_planes 600  rough_planes 600  raised_features 600  exact_sampling 600
   ENVIRONMENT "ES_BUILD_DIR=${CMAKE_BINARY_DIR}")

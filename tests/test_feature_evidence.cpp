@@ -195,6 +195,54 @@ TEST(FeatureEvidence, ALongMoveNeedsItsSamplesOnTheirPlanes) {
   EXPECT_TRUE(es::vertexEvidenceIsWeak(2.5, 0.7, edge, off));
 }
 
+// The median edge feature, weighted by its new vertices, decides: exact
+// samplers put nine in ten of a sharp edge's samples on its planes (within a
+// thousandth of a spacing), marching cubes and voxel remeshers do not.
+TEST(FeatureEvidence, AMeshIsSampledExactlyWhenItsMedianFeatureIs) {
+  const es::SharpenOptions opt;  // exact: 0.001 spacings
+  std::vector<es::Feature> features = {feature(100, 100, 0.0), feature(60, 60, 0.2),
+                                       feature(30, 30, 0.3)};
+  EXPECT_TRUE(es::sampledExactly(features, opt));  // 100 of 190 new vertices on their planes
+  features[1].vertices = features[1].moved = 80;
+  EXPECT_FALSE(es::sampledExactly(features, opt));  // 100 of 210
+  features[0].offPlaneQ90 = 0.0005;
+  features[1].offPlaneQ90 = 0.0008;
+  EXPECT_TRUE(es::sampledExactly(features, opt));
+  // Corners and features that did not move do not count.
+  EXPECT_FALSE(es::sampledExactly(
+      {feature(100, 0, 0.0), feature(100, 100, 0.2), feature(300, 300, 0.0, /*corner=*/true)},
+      opt));
+  EXPECT_FALSE(es::sampledExactly({}, opt));
+  es::SharpenOptions off = opt;
+  off.exactSamplingSpacings = 0;
+  EXPECT_FALSE(es::sampledExactly({feature(100, 100, 0.0)}, off));
+}
+
+// On a mesh sampled exactly, samples off their planes are the surface: a
+// designed bevel's samples lie on it, 0.1-0.5 spacings off both flanks.
+TEST(FeatureEvidence, OnAnExactlySampledMeshSamplesOffTheirPlanesAreTheSurface) {
+  const es::SharpenOptions opt;  // on-plane: 0.05 spacings
+  const es::Feature bevel = feature(40, 40, /*offPlane=*/0.2);
+  EXPECT_FALSE(es::featureEvidenceIsWeak(bevel, opt, /*exactSampling=*/false));
+  EXPECT_TRUE(es::featureEvidenceIsWeak(bevel, opt, /*exactSampling=*/true));
+  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(1, 1, 0.2, /*corner=*/true), opt, true));
+  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(40, 40, 0.04), opt, true));
+  // A sharp edge with a few samples where it meets a bevel: its median on
+  // its planes, the feature stays; the far samples' own new vertices rest.
+  es::Feature edge = feature(40, 40, /*offPlane=*/2.5);
+  edge.offPlaneQ90 = 0.04;
+  edge.offPlaneMedian = 0;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(edge, opt, true));
+  const bool notCorner = false;
+  EXPECT_FALSE(es::vertexEvidenceIsWeak(0.5, 0.2, notCorner, opt, /*exactSampling=*/false));
+  EXPECT_TRUE(es::vertexEvidenceIsWeak(0.5, 0.2, notCorner, opt, /*exactSampling=*/true));
+  EXPECT_FALSE(es::vertexEvidenceIsWeak(0.5, 0.04, notCorner, opt, true));
+  es::SharpenOptions off = opt;
+  off.onPlaneSpacings = 0;
+  EXPECT_FALSE(es::featureEvidenceIsWeak(bevel, off, true));
+  EXPECT_FALSE(es::vertexEvidenceIsWeak(0.5, 0.2, notCorner, off, true));
+}
+
 TEST(FeatureEvidence, QuantileIsTheNearestRank) {
   std::vector<double> none;
   EXPECT_EQ(es::detail::quantileOf(none, 0.9), 0.0);

@@ -324,6 +324,15 @@ inline const std::vector<OptionSpec> &optionTable() {
        "part: the new vertices they source stay at rest; 0: every far vertex counts).",
        T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
        ES_REAL(onPlaneSpacings)},
+      {"exact_sampling_spacings", "--exact-sampling", "", "Exact sampling tolerance",
+       "Auto method: a mesh whose median feature has nine in ten of its vertices within this "
+       "distance of their planes is sampled exactly on its surface (a remesher that casts its "
+       "vertices onto the input: Blender's voxel remesh with Preserve Volume); there a vertex "
+       "farther than --on-plane from its plane is the surface itself (a designed bevel or "
+       "blend): a feature with half of its vertices that far stays as it was, and the new "
+       "vertices such a vertex sources stay at rest (0: off).",
+       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(exactSamplingSpacings)},
       {"median_on_plane_spacings", "--on-plane-median", "", "Median on-plane tolerance",
        "Auto method: ...or unless half of the feature's vertices lie within this distance of "
        "their planes and none farther than --on-plane-median-max (a sampler that rounds a few "

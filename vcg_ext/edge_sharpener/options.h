@@ -190,6 +190,16 @@ struct SharpenOptions {
   /// meets another part, not on a blend along it. The new vertices those
   /// far samples source stay at rest. 0: every far sample counts.
   double onPlaneSpacings = 0.05;
+  /// A mesh counts as sampled exactly on its surface when its median edge
+  /// feature (weighted by its new vertices) has nine in ten of its source
+  /// vertices within this many sample spacings of their planes: a remesher
+  /// that casts or reprojects its vertices onto the input (Blender's voxel
+  /// remesh with Preserve Volume, isotropic remeshing with reprojection).
+  /// There a source vertex farther than `onPlaneSpacings` from its plane is
+  /// a point of the surface, not the sampler's cut: a designed bevel or
+  /// blend. A feature half of whose sources lie that far stays as it was,
+  /// and the new vertices such a source serves stay at rest. 0: off.
+  double exactSamplingSpacings = 0.001;
   /// ...or unless half of its source vertices lie within this many sample
   /// spacings of their planes and none farther than
   /// `maxMedianOnPlaneOffSpacings`: a sampler that rounds a few samples

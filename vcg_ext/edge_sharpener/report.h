@@ -100,6 +100,7 @@ struct EvidenceStats {
   double medianLift = 1;           ///< how far the moves lift the surface, per unit of length
   double noiseSpacings = 0;        ///< the input surface's noise (surfaceNoiseSpacings)
   double planarFraction = 0;       ///< the input's share of area on planes
+  bool exactSampling = false;      ///< sampled exactly on its surface (sampledExactly)
   bool wholeMeshLeft = false;      ///< too many refused, or too little lift: nothing sharpened
   std::size_t facesGivenBack = 0;  ///< split faces at rest back to their input face (fanned)
   std::size_t restingVerticesRemoved = 0;  ///< other inserted vertices at rest, merged away
@@ -217,8 +218,8 @@ inline void formatGuards(std::ostream &s, const SharpenReport &r) {
     << int(std::lround(100 * r.evidence.refusedBound)) << "%), "
     << "median lift " << std::lround(100 * r.evidence.medianLift) / 100.0 << ", noise "
     << std::lround(1000 * r.evidence.noiseSpacings) / 1000.0 << " spacings, "
-    << int(std::lround(100 * r.evidence.planarFraction)) << "% of the area on planes" << verdict
-    << "; ";
+    << int(std::lround(100 * r.evidence.planarFraction)) << "% of the area on planes"
+    << (r.evidence.exactSampling ? ", sampled exactly on its surface" : "") << verdict << "; ";
   if (r.evidence.flattenedVertices > 0)
     s << r.evidence.flattenedVertices
       << " vertices of the rough input's planar regions flattened onto their planes; ";

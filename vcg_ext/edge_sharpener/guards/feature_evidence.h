@@ -383,6 +383,31 @@ inline double medianLift(const std::vector<double> &lifts) {
   return moved.empty() ? 1.0 : detail::medianOf(moved);
 }
 
+/// Whether the mesh is sampled exactly on its surface: its median edge
+/// feature that moved, weighted by its new vertices, has nine in ten of its
+/// source vertices within opt.exactSamplingSpacings of their planes (a
+/// remesher that casts or reprojects its vertices onto the input). A
+/// sampler that cuts its own chamfers (marching cubes, a voxel remesher)
+/// leaves most features' samples measurably off near the edge. Pure.
+inline bool sampledExactly(const std::vector<Feature> &features, const SharpenOptions &opt) {
+  if (!(opt.exactSamplingSpacings > 0)) return false;
+  std::vector<std::pair<double, std::size_t>> q90;  // (offPlaneQ90, new vertices)
+  std::size_t total = 0;
+  for (const Feature &f : features)
+    if (!f.corner && f.moved > 0) {
+      q90.emplace_back(f.offPlaneQ90, f.vertices);
+      total += f.vertices;
+    }
+  if (total == 0) return false;
+  std::sort(q90.begin(), q90.end());
+  std::size_t below = 0;
+  for (const auto &[q, vertices] : q90) {
+    below += vertices;
+    if (2 * below >= total) return q <= opt.exactSamplingSpacings;
+  }
+  return false;
+}
+
 /// Whether a feature has too little evidence to be sharpened: too short to
 /// be a feature, an edge whose flanks meet at too shallow an angle or on a
 /// line that crosses its chamfer instead of running along it, most of its
@@ -390,8 +415,13 @@ inline double medianLift(const std::vector<double> &lifts) {
 /// plane its flank extrapolates, unless nine in ten of them lie on their
 /// planes, or half of them do and none lies much farther, both bounds times
 /// the sine of the angle its flanks meet at (then only the far samples' new
-/// vertices stay at rest: EvidenceGuard::vertexIsWeak).
-inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
+/// vertices stay at rest: EvidenceGuard::vertexIsWeak). On a mesh sampled
+/// exactly (sampledExactly), also when half of its samples lie off their
+/// planes: the surface runs there, a designed bevel or blend.
+inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt,
+                                  bool exactSampling = false) {
+  if (exactSampling && opt.onPlaneSpacings > 0 && f.offPlaneMedian > opt.onPlaneSpacings)
+    return true;
   if (!f.corner && f.vertices < std::size_t(opt.minFeatureVertices)) return true;
   if (!f.corner && f.flankAngleRad < opt.minFeatureAngleRad) return true;
   if (!f.corner && opt.maxFeatureLineChamferAngleRad > 0 &&
@@ -418,9 +448,13 @@ inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt) {
 /// `longMoveSpacings`: a flank's misfit grows along the extrapolation to the
 /// line two planes meet on. A corner's point is pinned by three planes, and
 /// an acute corner's move is long by its shape; left alone among sharpened
-/// edges it would be a notch. Both in sample spacings. Pure.
+/// edges it would be a notch. On a mesh sampled exactly (sampledExactly),
+/// a source off its plane beyond opt.onPlaneSpacings is a point of the
+/// surface and vouches for none of them. Both in sample spacings. Pure.
 inline bool vertexEvidenceIsWeak(double moveSpacings, double sourceOffPlaneSpacings, bool corner,
-                                 const SharpenOptions &opt) {
+                                 const SharpenOptions &opt, bool exactSampling = false) {
+  if (exactSampling && opt.onPlaneSpacings > 0 && sourceOffPlaneSpacings > opt.onPlaneSpacings)
+    return true;
   if (sourceOffPlaneSpacings > opt.maxFeatureOffPlaneSpacings) return true;
   return !corner && opt.longMoveSpacings > 0 && moveSpacings > opt.longMoveSpacings &&
          sourceOffPlaneSpacings > opt.maxLongMoveOffPlaneSpacings;
@@ -464,16 +498,18 @@ inline bool meshEvidenceIsWeak(double refused, double lift, const SurfaceMeasure
 
 /// Per feature, whether its moves go back: every feature when the mesh as a
 /// whole shows too little evidence (meshEvidenceIsWeak with the moves'
-/// median `lift`), else those whose evidence is weak and the corners one of
-/// whose edges' is (a corner is where its edges meet).
+/// median `lift`), else those whose evidence is weak (featureEvidenceIsWeak,
+/// on a mesh sampled exactly or not) and the corners one of whose edges' is
+/// (a corner is where its edges meet).
 inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<Feature> &features,
                                       const std::vector<std::uint32_t> &featureOf, double lift,
-                                      const SurfaceMeasures &surface, const SharpenOptions &opt) {
+                                      const SurfaceMeasures &surface, const SharpenOptions &opt,
+                                      bool exactSampling = false) {
   if (meshEvidenceIsWeak(refusedFraction(features), lift, surface, opt))
     return std::vector<char>(features.size(), 1);
   std::vector<char> weak(features.size(), 0);
   for (std::size_t c = 0; c < features.size(); ++c)
-    weak[c] = featureEvidenceIsWeak(features[c], opt);
+    weak[c] = featureEvidenceIsWeak(features[c], opt, exactSampling);
   // An edge feature's weakness reaches the corner features around its sources.
   std::vector<char> weakSource(plan.originalVertexCount, 0);
   for (std::size_t k = 0; k < plan.inserted.size(); ++k)
@@ -544,7 +580,8 @@ class EvidenceGuard {
   /// vertexEvidenceIsWeak).
   bool vertexIsWeak(std::size_t k) const {
     const VertexEvidence e = vertexEvidence(k);
-    return vertexEvidenceIsWeak(e.moveSpacings, e.sourceOffPlaneSpacings, e.corner, opt_);
+    return vertexEvidenceIsWeak(e.moveSpacings, e.sourceOffPlaneSpacings, e.corner, opt_,
+                                exactSampling_);
   }
   Judgement judge() {
     Judgement out;
@@ -557,12 +594,15 @@ class EvidenceGuard {
     stats.medianLift = medianLift(out.lifts);
     stats.noiseSpacings = surface_.noiseSpacings;
     stats.planarFraction = surface_.planarFraction;
+    exactSampling_ = sampledExactly(features_, opt_);
+    stats.exactSampling = exactSampling_;
     stats.wholeMeshLeft =
         meshEvidenceIsWeak(stats.refusedFraction, stats.medianLift, surface_, opt_);
     if (!stats.wholeMeshLeft)
       countSheetCrossings(m_, moves_, support_, out.lifts, featureOf_, longestInputEdge_,
                           features_);
-    out.weak = weakFeatures(moves_.plan(), features_, featureOf_, stats.medianLift, surface_, opt_);
+    out.weak = weakFeatures(moves_.plan(), features_, featureOf_, stats.medianLift, surface_, opt_,
+                            exactSampling_);
     for (std::size_t c = 0; c < features_.size(); ++c)
       stats.weakFeatures += out.weak[c] && features_[c].moved > 0;
     return out;
@@ -635,6 +675,7 @@ class EvidenceGuard {
   const SharpenOptions &opt_;
   std::vector<Feature> features_;
   std::vector<std::uint32_t> featureOf_;
+  bool exactSampling_ = false;  ///< sampledExactly, set by judge()
 };
 
 }  // namespace edge_sharpener
