@@ -177,6 +177,17 @@ TEST(Convexity, SymmetricInSwappingTheEndpoints) {
 // face is the part of its plane on the side's inner side; where a floor
 // (z = 0) meets a wall rising from x = 1, the floor's face is the part on
 // the wall's outer side. Either way the top's or floor's own samples tell.
+// One plane per region; a zero normal where the region is no plane.
+TEST(RegionPlaneOf, OnlyARegionThatIsAPlane) {
+  const std::vector<es::Plane> planes = {{Vec3(0, 0, 0), Vec3(0, 0, 1)},
+                                         {Vec3(0, 0, 0), Vec3(0, 0, 0)}};
+  ASSERT_NE(es::regionPlaneOf(planes, 0), nullptr);
+  EXPECT_EQ(es::regionPlaneOf(planes, 0), &planes[0]);
+  EXPECT_EQ(es::regionPlaneOf(planes, 1), nullptr);
+  EXPECT_EQ(es::regionPlaneOf(planes, 2), nullptr);
+  EXPECT_EQ(es::regionPlaneOf(planes, -1), nullptr);
+}
+
 TEST(OnSideOf, ThePartOfAPlaneThatIsTheFaceIsWhereItsSamplesLie) {
   const Plane side{Vec3(1, 0, 0.5), Vec3(1, 0, 0)};
   const Vec3 topSample(0.7, 0.2, 1);

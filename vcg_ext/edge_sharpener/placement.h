@@ -300,11 +300,7 @@ constexpr double kOwnPlaneMaxTurnRad = 30.0 * M_PI / 180.0;
 inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes &support,
                            const SharpenOptions &opt, Vec3 &target) {
   if (support.regionPlanes.empty()) return;
-  const auto ownPlane = [&](int region) -> const Plane * {
-    if (region < 0 || std::size_t(region) >= support.regionPlanes.size()) return nullptr;
-    const Plane &p = support.regionPlanes[region];
-    return p.normal.SquaredNorm() > 0 ? &p : nullptr;
-  };
+  const auto ownPlane = [&](int region) { return regionPlaneOf(support.regionPlanes, region); };
   Plane own[3];
   for (int i = 0; i < src.originalCount; ++i) {
     const Plane *p = ownPlane(support.region[src.original[i]]);

@@ -250,11 +250,6 @@ std::size_t labelledVertices(const MeshType &m, const FeatureZones &zones) {
   return std::min({zones.vertexLabel.size(), zones.inRegion.size(), m.vert.size()});
 }
 
-inline bool isPlane(const std::vector<Plane> &regionPlanes, int r) {
-  return r >= 0 && std::size_t(r) < regionPlanes.size() &&
-         regionPlanes[std::size_t(r)].normal.SquaredNorm() > 0;
-}
-
 /// Whether `target`, on region r's plane, lies on the region's face: on the
 /// side of every other planar region's plane labelling a vertex of `around`
 /// where region r's own vertices of `around` lie (their centre). False when
@@ -273,9 +268,8 @@ bool onRegionFace(const MeshType &m, const FeatureZones &zones,
   const Vec3 ownCentre = ownSum / double(own);
   for (const std::size_t u : around) {
     const int other = u < nv ? zones.vertexLabel[u] : kZone;
-    if (other != r && isPlane(regionPlanes, other) &&
-        !onSideOf(regionPlanes[std::size_t(other)], target, ownCentre))
-      return false;
+    const Plane *otherPlane = other != r ? regionPlaneOf(regionPlanes, other) : nullptr;
+    if (otherPlane && !onSideOf(*otherPlane, target, ownCentre)) return false;
   }
   return true;
 }
@@ -308,8 +302,9 @@ std::size_t flattenPlanarRegions(MeshType &m, const VertexFaceTable &vf, const F
   std::uint32_t walk = 0;
   for (std::size_t v = 0; v < nv; ++v) {
     const int r = zones.vertexLabel[v];
-    if (m.vert[v].IsD() || !detail::isPlane(regionPlanes, r)) continue;
-    const Plane &pl = regionPlanes[std::size_t(r)];
+    const Plane *own = regionPlaneOf(regionPlanes, r);
+    if (m.vert[v].IsD() || !own) continue;
+    const Plane &pl = *own;
     const Vec3 p = positionOf(&m.vert[v]);
     const double offset = pl.normal * (p - pl.point);
     if (!(outward * offset > minMove && std::abs(offset) <= maxMove)) continue;

@@ -408,6 +408,14 @@ inline bool sampledExactly(const std::vector<Feature> &features, const SharpenOp
   return false;
 }
 
+/// Whether a sample `offPlaneSpacings` from its plane is a point of the
+/// surface rather than the sampler's cut: on a mesh sampled exactly
+/// (sampledExactly), farther than opt.onPlaneSpacings. Pure.
+inline bool offPlaneIsSurface(double offPlaneSpacings, const SharpenOptions &opt,
+                              bool exactSampling) {
+  return exactSampling && opt.onPlaneSpacings > 0 && offPlaneSpacings > opt.onPlaneSpacings;
+}
+
 /// Whether a feature has too little evidence to be sharpened: too short to
 /// be a feature, an edge whose flanks meet at too shallow an angle or on a
 /// line that crosses its chamfer instead of running along it, most of its
@@ -420,8 +428,7 @@ inline bool sampledExactly(const std::vector<Feature> &features, const SharpenOp
 /// planes: the surface runs there, a designed bevel or blend.
 inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt,
                                   bool exactSampling = false) {
-  if (exactSampling && opt.onPlaneSpacings > 0 && f.offPlaneMedian > opt.onPlaneSpacings)
-    return true;
+  if (offPlaneIsSurface(f.offPlaneMedian, opt, exactSampling)) return true;
   if (!f.corner && f.vertices < std::size_t(opt.minFeatureVertices)) return true;
   if (!f.corner && f.flankAngleRad < opt.minFeatureAngleRad) return true;
   if (!f.corner && opt.maxFeatureLineChamferAngleRad > 0 &&
@@ -453,8 +460,7 @@ inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt,
 /// surface and vouches for none of them. Both in sample spacings. Pure.
 inline bool vertexEvidenceIsWeak(double moveSpacings, double sourceOffPlaneSpacings, bool corner,
                                  const SharpenOptions &opt, bool exactSampling = false) {
-  if (exactSampling && opt.onPlaneSpacings > 0 && sourceOffPlaneSpacings > opt.onPlaneSpacings)
-    return true;
+  if (offPlaneIsSurface(sourceOffPlaneSpacings, opt, exactSampling)) return true;
   if (sourceOffPlaneSpacings > opt.maxFeatureOffPlaneSpacings) return true;
   return !corner && opt.longMoveSpacings > 0 && moveSpacings > opt.longMoveSpacings &&
          sourceOffPlaneSpacings > opt.maxLongMoveOffPlaneSpacings;

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <vector>
 
 namespace edge_sharpener {
 
@@ -23,6 +24,15 @@ struct Plane {
   Vec3 point;
   Vec3 normal;
 };
+
+/// Region r's plane in `regionPlanes` (one per region, a zero normal where
+/// the region is no plane: planar_regions.h, planarRegionPlanes), or nullptr
+/// where r is no region or its region no plane.
+inline const Plane *regionPlaneOf(const std::vector<Plane> &regionPlanes, int r) {
+  if (r < 0 || std::size_t(r) >= regionPlanes.size()) return nullptr;
+  const Plane &p = regionPlanes[std::size_t(r)];
+  return p.normal.SquaredNorm() > 0 ? &p : nullptr;
+}
 
 /// Angle between two vectors in [0, pi]; 0 when either is zero.
 inline double angleBetween(const Vec3 &u, const Vec3 &v) {
