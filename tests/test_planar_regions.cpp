@@ -132,12 +132,14 @@ struct TwoSources {
     support.nearby[source][0] = 2;
     return *this;
   }
-  /// Where placement puts the vertex: between the fits, then onRegionPlanes.
-  Vec3 placed() const {
+  /// Where placement puts the vertex: between the fits, then onRegionPlanes
+  /// (with its edge's typical turn, OwnPlaneTurns; negative: not known).
+  Vec3 placed(double typicalTurnDeg = -1) const {
     const es::Plane fits[2] = {support.plane(0), support.plane(1)};
     Vec3 target;
     EXPECT_EQ(es::paperPlacement(src, fits, opt, target), es::Placement::Moved);
-    es::detail::onRegionPlanes(src, support, opt, target);
+    const double typical = typicalTurnDeg < 0 ? -1 : typicalTurnDeg * M_PI / 180.0;
+    es::detail::onRegionPlanes(src, support, opt, target, typical);
     return target;
   }
 };
@@ -224,6 +226,57 @@ TEST(OnRegionPlanes, NotWhereAFitTurnsFarFromItsRegionsPlane) {
 TEST(OnRegionPlanes, WhereAFitTurnsLessFromItsRegionsPlane) {
   const Vec3 placed = withSource0FitTurned(25).placed();
   EXPECT_LT((placed - kOnOwnPlanes).Norm(), 1e-9);
+}
+
+// Along an edge whose fits turn 2 degrees from the own planes, a fit turned
+// 25 degrees sees where the flank runs on into another surface (a fillet at
+// the edge's end): the own planes' line would run on straight past it.
+TEST(OnRegionPlanes, NotWhereAFitTurnsFarBeyondItsEdgesTypicalTurn) {
+  const Vec3 placed = withSource0FitTurned(25).placed(/*typicalTurnDeg=*/2);
+  EXPECT_GT((placed - kOnOwnPlanes).Norm(), 0.01);
+}
+
+// A reconstruction rounds the whole edge alike: its fits all turn about as
+// far, and the own planes correct them.
+TEST(OnRegionPlanes, WhereTheEdgesFitsTurnAlike) {
+  const Vec3 placed = withSource0FitTurned(25).placed(/*typicalTurnDeg=*/10);
+  EXPECT_LT((placed - kOnOwnPlanes).Norm(), 1e-9);
+}
+
+// The typical turn of an edge is the median over its vertices of the
+// largest turn of their sources' fits from their regions' own planes.
+TEST(OwnPlaneTurns, TheMedianTurnOfAnEdgesVertices) {
+  es::SupportPlanes support;
+  support.reset(5);
+  support.sampleSpacing = 0.1;
+  support.region = {0, 1, 0, 0, 2};
+  const auto turned = [](double deg) {
+    const double a = deg * M_PI / 180.0;
+    return Vec3(std::sin(a), 0, std::cos(a));
+  };
+  support.setFit(0, es::SupportFit::of({Vec3(0, 0, 0), turned(0)}));
+  support.setFit(1, es::SupportFit::of({Vec3(0, 0, 0), Vec3(1, 0, 0)}));
+  support.setFit(2, es::SupportFit::of({Vec3(0, 0, 0), turned(4)}));
+  support.setFit(3, es::SupportFit::of({Vec3(0, 0, 0), turned(25)}));
+  support.setFit(4, es::SupportFit::of({Vec3(0, 0, 0), Vec3(0, 1, 0)}));
+  support.regionPlanes = {es::Plane{Vec3(0, 0, 0), Vec3(0, 0, 1)},
+                          es::Plane{Vec3(0, 0, 0), Vec3(1, 0, 0)},
+                          es::Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)}};  // region 2: no plane
+  const auto source = [](std::size_t a, std::size_t b, std::size_t c = 0, int count = 2) {
+    es::InsertedVertexSource src;
+    src.original = {a, b, c};
+    src.originalCount = count;
+    return src;
+  };
+  es::SplitPlan plan;
+  plan.originalVertexCount = 5;
+  plan.inserted = {source(0, 1), source(2, 1), source(1, 3), source(0, 4)};
+  const es::OwnPlaneTurns turns(plan, support);
+  // Edge (0, 1): turns 0, 4 and 25 degrees; the fit beside region 1 is exact.
+  EXPECT_NEAR(turns.typicalRad(source(3, 1), support) * 180 / M_PI, 4, 1e-9);
+  EXPECT_LT(turns.typicalRad(source(0, 4), support), 0);                // region 2 is no plane
+  EXPECT_LT(turns.typicalRad(source(0, 1, 2, 3), support), 0);          // a corner
+  EXPECT_LT(es::OwnPlaneTurns().typicalRad(source(0, 1), support), 0);  // none measured
 }
 
 TEST(PlanarRegions, OutwardSignFollowsTheFacesOrientation) {

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "options.h"
@@ -281,6 +282,65 @@ constexpr double kMinShiftSpacings = 0.1;
 /// region's own plane lies on another surface the region took in.
 constexpr double kOwnPlaneMaxTurnRad = 30.0 * M_PI / 180.0;
 
+/// See onRegionPlanes(): a fitted plane turned farther than this beyond the
+/// typical turn of its edge's fits (OwnPlaneTurns) sees another surface.
+constexpr double kOwnPlaneMaxExtraTurnRad = 20.0 * M_PI / 180.0;
+
+/// The largest angle between the fitted planes of `src`'s sources and their
+/// regions' own planes (SupportPlanes::regionPlanes); -1 where a source's
+/// region is no plane.
+inline double ownPlaneTurnRad(const InsertedVertexSource &src, const SupportPlanes &support) {
+  double turn = 0;
+  for (int i = 0; i < src.originalCount; ++i) {
+    const std::size_t s = src.original[i];
+    const Plane *own = regionPlaneOf(support.regionPlanes, support.region[s]);
+    if (!own) return -1;
+    turn = std::max(turn, angleBetween(own->normal, support.plane(s).normal));
+  }
+  return turn;
+}
+
+}  // namespace detail
+
+/// Per pair of regions an edge runs between, the median turn of its edge
+/// vertices' fitted planes from their regions' own planes
+/// (detail::ownPlaneTurnRad): a reconstruction rounds a sharp edge about
+/// alike along its length, and turns the fits next to it about alike.
+class OwnPlaneTurns {
+ public:
+  OwnPlaneTurns() = default;
+  OwnPlaneTurns(const SplitPlan &plan, const SupportPlanes &support) {
+    if (support.regionPlanes.empty()) return;
+    std::unordered_map<std::uint64_t, std::vector<double>> turns;
+    for (const InsertedVertexSource &src : plan.inserted) {
+      const double turn = src.originalCount == 2 ? detail::ownPlaneTurnRad(src, support) : -1;
+      if (turn >= 0) turns[key(src, support)].push_back(turn);
+    }
+    for (auto &[pair, values] : turns) {
+      auto mid = values.begin() + values.size() / 2;
+      std::nth_element(values.begin(), mid, values.end());
+      median_[pair] = *mid;
+    }
+  }
+  /// The median turn (radians) of the edge whose vertex `src` is; -1 where
+  /// none is known (a corner vertex, a region that is no plane).
+  double typicalRad(const InsertedVertexSource &src, const SupportPlanes &support) const {
+    if (src.originalCount != 2 || median_.empty()) return -1;
+    const auto it = median_.find(key(src, support));
+    return it == median_.end() ? -1 : it->second;
+  }
+
+ private:
+  static std::uint64_t key(const InsertedVertexSource &src, const SupportPlanes &support) {
+    const auto a = std::uint32_t(support.region[src.original[0]]);
+    const auto b = std::uint32_t(support.region[src.original[1]]);
+    return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+  }
+  std::unordered_map<std::uint64_t, double> median_;
+};
+
+namespace detail {
+
 /// Moves `target`, the placement between the planes fitted next to the
 /// feature, onto the sources' regions' own planes (SupportPlanes::
 /// regionPlanes) where every source's region is a plane and the placement
@@ -296,10 +356,18 @@ constexpr double kOwnPlaneMaxTurnRad = 30.0 * M_PI / 180.0;
 /// face: an edge vertex takes its flanks' own line only where every other
 /// region nearby is a plane too, and stops at the corner where that line
 /// meets it (keepBeforeEndPlane); a corner vertex only where no fourth
-/// region lies nearby.
+/// region lies nearby. Nor where an edge vertex's fits turn from the own
+/// planes more than kOwnPlaneMaxExtraTurnRad beyond its edge's typical turn
+/// (`typicalTurnRad`, OwnPlaneTurns; negative: not known): a reconstruction
+/// rounds the whole edge alike, while a fit that turns alone sees where the
+/// flank runs on into another surface (a fillet at the edge's end), past
+/// which the own planes' line runs on straight.
 inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes &support,
-                           const SharpenOptions &opt, Vec3 &target) {
+                           const SharpenOptions &opt, Vec3 &target, double typicalTurnRad = -1) {
   if (support.regionPlanes.empty()) return;
+  if (typicalTurnRad >= 0 &&
+      ownPlaneTurnRad(src, support) > typicalTurnRad + kOwnPlaneMaxExtraTurnRad)
+    return;
   const auto ownPlane = [&](int region) { return regionPlaneOf(support.regionPlanes, region); };
   Plane own[3];
   for (int i = 0; i < src.originalCount; ++i) {
@@ -431,7 +499,8 @@ inline Verdict anyAtTarget(const InsertedVertexSource &src, const Plane *planes,
 /// \return the outcome and, for Placement::Moved, the target in `target` and
 ///         in `bent` whether a flank bends away before it (veto::anyAtTarget).
 inline Placement proposePlacement(const InsertedVertexSource &src, const SupportPlanes &support,
-                                  const SharpenOptions &opt, Vec3 &target, bool &bent) {
+                                  const SharpenOptions &opt, Vec3 &target, bool &bent,
+                                  const OwnPlaneTurns &typicalTurns = {}) {
   bent = false;
   Plane planes[3];
   for (int i = 0; i < src.originalCount; ++i) {
@@ -445,7 +514,8 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
   if (!extended || paper != Placement::Moved) return paper;
   const Placement verdict =
       veto::anyAtTarget(src, planes, support, opt, target, bent).value_or(Placement::Moved);
-  if (verdict == Placement::Moved) detail::onRegionPlanes(src, support, opt, target);
+  if (verdict == Placement::Moved)
+    detail::onRegionPlanes(src, support, opt, target, typicalTurns.typicalRad(src, support));
   return verdict;
 }
 
@@ -502,11 +572,13 @@ void placeInsertedVertices(MeshType &m, const SplitPlan &plan, MeshLabels<MeshTy
   using Scalar = typename MeshType::ScalarType;
   const std::size_t n0 = plan.originalVertexCount;
   std::vector<Vec3> insertedPos(plan.inserted.size());
+  const OwnPlaneTurns typicalTurns(plan, support);
   for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
     insertedPos[k] = plan.inserted[k].rest;
     Vec3 target;
     bool bent = false;
-    const Placement p = proposePlacement(plan.inserted[k], support, opt, target, bent);
+    const Placement p =
+        proposePlacement(plan.inserted[k], support, opt, target, bent, typicalTurns);
     if (p == Placement::Moved) insertedPos[k] = target;
     labels.placement[n0 + k] = p;
     labels.bentFlank[n0 + k] = p == Placement::Moved && bent;
