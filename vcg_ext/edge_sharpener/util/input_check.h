@@ -114,9 +114,11 @@ std::string findInputProblem(MeshType &m) {
   const std::size_t nf = m.face.size(), firstNonManifold = edges.firstNonManifoldFace;
   if (firstNonManifold < nf)
     return "mesh has non-manifold edges (three or more faces on an edge, e.g. at face " +
-           std::to_string(firstNonManifold) + ")";
+           std::to_string(firstNonManifold) +
+           "); repair them first (MeshLab: Repair non Manifold Edges)";
   if (std::size_t n = detail::countNonManifoldVertices(m))
-    return "mesh has " + std::to_string(n) + " non-manifold vertices";
+    return "mesh has " + std::to_string(n) +
+           " non-manifold vertices; repair them first (MeshLab: Repair non Manifold Vertices)";
   if (edges.misoriented) return "faces are not consistently oriented (re-orient the mesh first)";
   return "";
 }
