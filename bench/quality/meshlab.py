@@ -76,6 +76,26 @@ def isotropic_remeshing(target_len, diag, iterations=12):
     ])
 
 
+def quadric_decimation(fraction):
+    """Quadric Edge Collapse Decimation to `fraction` of the faces, every other parameter at
+    MeshLab 2020.09's defaults (optimal placement on, topology and normals not preserved)."""
+    return _filter("Simplification: Quadric Edge Collapse Decimation", [
+        _p_int("TargetFaceNum", 0),
+        _p_float("TargetPerc", fraction),
+        _p_float("QualityThr", 0.3),
+        _p_bool("PreserveBoundary", False),
+        _p_float("BoundaryWeight", 1),
+        _p_bool("PreserveNormal", False),
+        _p_bool("PreserveTopology", False),
+        _p_bool("OptimalPlacement", True),
+        _p_bool("PlanarQuadric", False),
+        _p_float("PlanarWeight", 0.001),
+        _p_bool("QualityWeight", False),
+        _p_bool("AutoClean", True),
+        _p_bool("Selected", False),
+    ])
+
+
 def csg_intersection(delta, diag):
     """Marching intersections: layer 0 intersected with its copy in layer 1.
 

@@ -7,7 +7,10 @@
 // quality benchmark's cached inputs of one half.
 // With --vertices it prints one line per moved inserted vertex of a feature
 // the guard keeps instead: its move and lift, and its own change of distance
-// to the reference (a per-vertex bound's study).
+// to the reference (a per-vertex bound's study); for an edge vertex also how
+// far its rest position lies from its two sources' planes, the angle they
+// meet at, and how far the move runs along their line (a target on other
+// planes than the fits': the own planes of onRegionPlanes).
 // With --sources it prints one line per (feature, source vertex) pair
 // instead: where the source lies, how far from its own plane and from the
 // nearest plane of the vertex's other sources (both in sample spacings), and
@@ -166,8 +169,26 @@ int main(int argc, char **argv) {
           reach = std::max(
               reach, (target - moves.exactRest(plan.inserted[k].original[i])).Norm() / spacing);
         const double d0 = distance(rest) / spacing, d1 = distance(target) / spacing;
+        // How far the rest position lies from each source's plane, and the
+        // angle those planes meet at (edge vertices).
+        double restNear = 0, restFar = 0, flankDeg = 90, along = 0;
+        if (plan.inserted[k].originalCount == 2) {
+          const es::Plane &a = zones.support.plane(plan.inserted[k].original[0]);
+          const es::Plane &b = zones.support.plane(plan.inserted[k].original[1]);
+          const double da = std::abs(a.normal * (rest - a.point)) / spacing;
+          const double db = std::abs(b.normal * (rest - b.point)) / spacing;
+          restNear = std::min(da, db);
+          restFar = std::max(da, db);
+          flankDeg = es::planeMeetingAngle(a.normal, b.normal) * 180 / M_PI;
+          es::Vec3 line = a.normal ^ b.normal;
+          if (line.Norm() > 0) along = std::abs((target - rest) * line.Normalize()) / spacing;
+        }
         std::printf(
-            "{\"case\": \"%s\", \"feature\": %zu, \"corner\": %d, \"feature_vertices\": "
+            "{\"rest_near\": %.4f, \"rest_far\": %.4f, \"flank_deg\": %.2f, "
+            "\"along\": %.4f, ",
+            restNear, restFar, flankDeg, along);
+        std::printf(
+            "\"case\": \"%s\", \"feature\": %zu, \"corner\": %d, \"feature_vertices\": "
             "%zu, \"feature_lift\": %.4f, \"length\": %.4f, \"lift\": %.4f, \"source_off_plane\": "
             "%.4f, \"reach\": %.4f, \"sent_back\": %d, \"before\": %.5f, \"after\": %.5f, \"x\": "
             "[%.6g, %.6g, "

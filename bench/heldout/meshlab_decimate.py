@@ -1,0 +1,110 @@
+#!/usr/bin/python3
+"""A fourth held-out check of the default method, on the pipeline most MeshLab users run on a
+marching-cubes mesh: MeshLab's Uniform Mesh Resampling (the benchmark's own UMR inputs, cell
+0.5% and 1% of the diagonal) decimated by MeshLab's "Simplification: Quadric Edge Collapse
+Decimation" at its defaults (optimal placement, topology not preserved) to 25% and 50% of its
+faces. The decimation keeps the chamfers but merges their samples into long, thin triangles
+whose vertices the quadrics place off the sampler's grid. No threshold is chosen on it; it
+says whether a rule chosen on the tuning half harms meshes made by another tool.
+
+  /usr/bin/python3 bench/heldout/meshlab_decimate.py [--build BUILD] [--shared DIR]
+      [--method auto] [--out FILE.md] [-- extra CLI options]
+
+Needs the quality benchmark's cached UMR inputs (BUILD/quality-cache/inputs, after
+scripts/bench-quality.sh) and its meshlabserver (BUILD/meshlab-prefix, xvfb-run). References
+as in open3d_poisson.py. Distances: mesh-distance --sampling meshlab, "worse" by the
+benchmark's rule (bench/quality/families.py). The meshes are written to
+BUILD/heldout-decimate.
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import heldout  # noqa: E402
+import meshlab  # noqa: E402  (bench/quality, on the path through heldout)
+
+# (key, the benchmark's UMR input, share of the faces kept, title)
+SAMPLERS = (
+    ("umr05q25", "umr_0.5pct", 0.25, "MeshLab Uniform Mesh Resampling, cell 0.5% of the "
+                                      "diagonal, then Quadric Edge Collapse Decimation (its "
+                                      "defaults) to 25% of the faces"),
+    ("umr1q50", "umr_1pct", 0.5, "MeshLab Uniform Mesh Resampling, cell 1% of the diagonal, "
+                                 "then Quadric Edge Collapse Decimation (its defaults) to 50% "
+                                 "of the faces"),
+)
+MADE = """Each input is the quality benchmark's cached Uniform Mesh Resampling of the reference
+(the UMR family: cell 0.5% or 1% of the diagonal), decimated by MeshLab 2020.09's
+meshlabserver with "Simplification: Quadric Edge Collapse Decimation" at its defaults (quality
+threshold 0.3, optimal placement on, boundary, normals and topology not preserved, planar
+simplification off, post-simplification cleaning on) to 25% (0.5%) or 50% (1%) of its faces:
+the edge lengths of both come out near 1% of the diagonal. A reference without a UMR input is
+listed as skipped; a mesh the sharpener refuses is listed with its message. The geometric
+means leave out the references without sharp features (sphere, rocker-arm); chamfer-cube is
+left out, as its reference is another shape."""
+NOTES = """What it found (diagnosed by hand):
+
+- MeshLab 2020.09's decimation, at its defaults, leaves many of these meshes non-manifold
+  (folded fins: a face repeated with the opposite orientation, fans of three or more faces on
+  one edge), and the sharpener refuses them with its message. Turning Preserve Topology on
+  or running Remove Duplicate Faces after it leaves 5 of 7 and 5 of 9 tried still
+  non-manifold; Open3D 0.16's simplify_quadric_decimation, tried on scikit-image's marching
+  cubes at 0.5%, left 16 of 20 so. The benchmark's UMR failed on five references at 0.5%
+  (meshlabserver out of memory or its retIP assertion), which have no input here.
+- finished_hexprism at 0.5% decimated to a quarter read 0.307% -> 0.704% when this check was
+  first run: its edges between a cap and a side run into fillets of the prism's outline, and
+  where the fillet starts the planes fitted next to the feature turn 26 degrees from the
+  side's own plane while along the rest of the edge they turn under one degree; the own
+  planes' line ran on straight past the fillet (twelve targets 0.4-0.9 spacings from the
+  reference, the fitted planes' within 0.01; `evidence-study --vertices`). The rule of
+  2026-11-28 (own planes only where an edge's fits turn alike, `OwnPlaneTurns`, chosen on
+  the benchmark's tuning half, where it changed no output) reads it 0.152%. So for that rule
+  this check is not blind.
+- octa-flower17k at 0.5% decimated (0.611% -> 0.925%): the petals' outer tips (x or y near
+  +-17.5), edges whose flanks meet at 38-64 degrees, moved 1.4-1.6 spacings past the tip the
+  decimated chamfer rounds, as with Open3D's Poisson (`docs/heldout.md`). abc6 at 0.5%
+  (0.193% -> 0.351%): not diagnosed here; its designed conical chamfers make it worse in the
+  benchmark and in every other held-out check.
+"""
+
+
+def decimate(server, source, out, kept, work):
+    """source decimated to a share `kept` of its faces, written to out; "" or why not."""
+    ok, _, why = server.run([source], out, meshlab.script(meshlab.quadric_decimation(kept)),
+                            work, timeout=600)
+    return "" if ok else why
+
+
+def table(sampler, refs, half, work, args):
+    """One sampler's table (heldout.Table)."""
+    key, umr, kept, title = sampler
+    server = meshlab.Server(os.path.join(args.build, "meshlab-prefix", "bin", "meshlabserver"),
+                            os.path.join(work, "home"))
+    table = heldout.Table(title, args)
+    for name, ref in sorted(refs.items()):
+        source = os.path.join(args.build, "quality-cache", "inputs", f"{name}__{umr}.ply")
+        if not os.path.exists(source):
+            table.skip(name, half.get(name, "?"), f"no cached {umr} input")
+            continue
+        made = os.path.join(work, f"{name}__{key}.ply")
+        if not os.path.exists(made):
+            why = decimate(server, source, made, kept, os.path.join(work, "run", name + key))
+            if why:
+                table.skip(name, half.get(name, "?"), f"not made: {why}")
+                continue
+        table.measure(name, half.get(name, "?"), made, ref)
+    return table.text()
+
+
+def main():
+    args = heldout.parse_args(__doc__)
+    heldout.require_open3d("meshlab_decimate")
+    server = os.path.join(args.build, "meshlab-prefix", "bin", "meshlabserver")
+    if not meshlab.Server(server, "/tmp").available():
+        sys.exit("meshlab_decimate: meshlabserver (BUILD/meshlab-prefix) or xvfb-run not found")
+    heldout.run_samplers(args, SAMPLERS, table, os.path.join(args.build, "heldout-decimate"),
+                         "Held-out check: MeshLab's decimation of its marching cubes",
+                         "meshlab_decimate.py", 2, MADE, NOTES)
+
+
+if __name__ == "__main__":
+    main()
