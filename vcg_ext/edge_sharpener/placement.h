@@ -12,6 +12,7 @@
 
 #include "options.h"
 #include "subdivision.h"
+#include "util/statistics.h"
 
 namespace edge_sharpener {
 
@@ -316,11 +317,7 @@ class OwnPlaneTurns {
       const double turn = src.originalCount == 2 ? detail::ownPlaneTurnRad(src, support) : -1;
       if (turn >= 0) turns[key(src, support)].push_back(turn);
     }
-    for (auto &[pair, values] : turns) {
-      auto mid = values.begin() + values.size() / 2;
-      std::nth_element(values.begin(), mid, values.end());
-      median_[pair] = *mid;
-    }
+    for (auto &[pair, values] : turns) median_[pair] = detail::medianOf(values);
   }
   /// The median turn (radians) of the edge whose vertex `src` is; -1 where
   /// none is known (a corner vertex, a region that is no plane).
@@ -365,17 +362,12 @@ namespace detail {
 inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes &support,
                            const SharpenOptions &opt, Vec3 &target, double typicalTurnRad = -1) {
   if (support.regionPlanes.empty()) return;
-  if (typicalTurnRad >= 0 &&
-      ownPlaneTurnRad(src, support) > typicalTurnRad + kOwnPlaneMaxExtraTurnRad)
-    return;
+  const double turn = ownPlaneTurnRad(src, support);
+  if (turn < 0 || turn > kOwnPlaneMaxTurnRad) return;
+  if (typicalTurnRad >= 0 && turn > typicalTurnRad + kOwnPlaneMaxExtraTurnRad) return;
   const auto ownPlane = [&](int region) { return regionPlaneOf(support.regionPlanes, region); };
   Plane own[3];
-  for (int i = 0; i < src.originalCount; ++i) {
-    const Plane *p = ownPlane(support.region[src.original[i]]);
-    if (!p || angleBetween(p->normal, support.plane(src.original[i]).normal) > kOwnPlaneMaxTurnRad)
-      return;
-    own[i] = *p;
-  }
+  for (int i = 0; i < src.originalCount; ++i) own[i] = *ownPlane(support.region[src.original[i]]);
   // An edge vertex's two sources list up to three nearby regions each.
   constexpr int kMaxEnds = 6;
   const Plane *ends[kMaxEnds];

@@ -33,6 +33,7 @@
 #include "../placement.h"
 #include "../report.h"
 #include "../subdivision.h"
+#include "../util/statistics.h"
 #include "../util/vertex_faces.h"
 #include "box_hash_grid.h"
 #include "element_snapshot.h"
@@ -155,24 +156,6 @@ std::vector<std::uint32_t> groupFeatures(const SplitPlan &plan, RegionOf &&regio
   }
   return feature;
 }
-
-namespace detail {
-inline double medianOf(std::vector<double> &values) {
-  if (values.empty()) return 0;
-  auto mid = values.begin() + values.size() / 2;
-  std::nth_element(values.begin(), mid, values.end());
-  return *mid;
-}
-
-/// The value below which a fraction `q` (in [0, 1]) of `values` lie (the
-/// nearest rank; 0 for none). Reorders `values`.
-inline double quantileOf(std::vector<double> &values, double q) {
-  if (values.empty()) return 0;
-  auto at = values.begin() + std::size_t(std::lround(q * double(values.size() - 1)));
-  std::nth_element(values.begin(), at, values.end());
-  return *at;
-}
-}  // namespace detail
 
 /// The length the guard's distances are measured in: the sample spacing, or
 /// 1 where none was measured.

@@ -21,6 +21,7 @@
 
 #include "../util/attributes.h"
 #include "../util/geometry.h"
+#include "../util/statistics.h"
 #include "../util/vertex_faces.h"
 
 namespace edge_sharpener {
@@ -71,10 +72,7 @@ double surfaceNoiseSpacings(const MeshType &m, const VertexFaceTable &vf, double
   }
   noise.erase(std::remove_if(noise.begin(), noise.end(), [](double x) { return x < 0; }),
               noise.end());
-  if (noise.empty()) return 0;
-  auto mid = noise.begin() + noise.size() / 2;
-  std::nth_element(noise.begin(), mid, noise.end());
-  return *mid / spacing;
+  return detail::medianOf(noise) / spacing;
 }
 
 /// The share of the surface's area lying on planes: per region (`regionOf`
