@@ -366,3 +366,59 @@ TEST(CoincidentCorners, OnlyAnEdgeAtFloatRoundingOfTheLongestCounts) {
   EXPECT_FALSE(es::hasCoincidentCorners(a, b, b + Vec3(0, 1e-3, 0)));  // a needle, not one point
   EXPECT_FALSE(es::hasCoincidentCorners(a, b, Vec3(0.5, 0.001, 0)));   // a cap
 }
+
+// The unit cube's three faces at its corner (1, 1, 1), normals outwards.
+TEST(NearestPointBehindPlanes, OntoTheFaceEdgeOrCornerOfABox) {
+  const std::vector<Plane> faces = {Plane{Vec3(1, 0, 0), Vec3(1, 0, 0)},
+                                    Plane{Vec3(0, 1, 0), Vec3(0, 1, 0)},
+                                    Plane{Vec3(0, 0, 1), Vec3(0, 0, 1)}};
+  const auto nearest = [&](const Vec3 &p) {
+    return es::nearestPointBehindPlanes(p, faces, 1e-9, 1 * kDeg).value();
+  };
+  EXPECT_LT((nearest(Vec3(0.5, 0.5, 0.5)) - Vec3(0.5, 0.5, 0.5)).Norm(), 1e-12);  // behind all
+  EXPECT_LT((nearest(Vec3(1.2, 0.5, 0.5)) - Vec3(1, 0.5, 0.5)).Norm(), 1e-12);    // a face
+  EXPECT_LT((nearest(Vec3(1.2, 1.1, 0.5)) - Vec3(1, 1, 0.5)).Norm(), 1e-12);      // an edge
+  EXPECT_LT((nearest(Vec3(1.2, 1.1, 1.3)) - Vec3(1, 1, 1)).Norm(), 1e-12);        // the corner
+  // Beyond one face but in front of the edge's other face only by less than
+  // the projection would cross: the face, not the edge.
+  EXPECT_LT((nearest(Vec3(1.2, 0.9, 0.5)) - Vec3(1, 0.9, 0.5)).Norm(), 1e-12);
+}
+
+// The nearest point behind random planes: behind every one, and no random
+// point behind them all lies nearer.
+TEST(NearestPointBehindPlanes, NoPointBehindThemAllIsNearer) {
+  std::mt19937 rng(7);
+  std::normal_distribution<double> g(0, 1);
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<Plane> planes;
+    for (int k = 0; k < 3; ++k)
+      planes.push_back(
+          Plane{Vec3(g(rng), g(rng), g(rng)) * 0.3, unit(Vec3(g(rng), g(rng), g(rng)))});
+    const Vec3 p(g(rng), g(rng), g(rng));
+    const auto nearest = es::nearestPointBehindPlanes(p, planes, 1e-9, 1 * kDeg);
+    ASSERT_TRUE(nearest.has_value());
+    for (const Plane &plane : planes) EXPECT_LE(planeOffset(plane, *nearest), 1e-9);
+    const double d = (*nearest - p).Norm();
+    for (int s = 0; s < 2000; ++s) {
+      const Vec3 q = *nearest + Vec3(g(rng), g(rng), g(rng)) * 0.05;
+      bool behind = true;
+      for (const Plane &plane : planes) behind = behind && planeOffset(plane, q) <= 0;
+      if (behind) EXPECT_GE((q - p).Norm(), d - 1e-9);
+    }
+  }
+}
+
+// Two parallel planes facing each other (a slab) have no edge; a point
+// beyond one goes onto it. Facing away from each other nothing lies behind
+// both.
+TEST(NearestPointBehindPlanes, ParallelPlanes) {
+  const std::vector<Plane> slab = {Plane{Vec3(0, 0, 1), Vec3(0, 0, 1)},
+                                   Plane{Vec3(0, 0, -1), Vec3(0, 0, -1)}};
+  EXPECT_LT((es::nearestPointBehindPlanes(Vec3(0.3, 0, 1.5), slab, 1e-9, 1 * kDeg).value() -
+             Vec3(0.3, 0, 1))
+                .Norm(),
+            1e-12);
+  const std::vector<Plane> apart = {Plane{Vec3(0, 0, 1), Vec3(0, 0, -1)},
+                                    Plane{Vec3(0, 0, -1), Vec3(0, 0, 1)}};
+  EXPECT_FALSE(es::nearestPointBehindPlanes(Vec3(0, 0, 0), apart, 1e-9, 1 * kDeg).has_value());
+}

@@ -291,9 +291,11 @@ TEST(PlanarRegions, OutwardSignFollowsTheFacesOrientation) {
 // labelled with the flat region, one of its own raised above its plane
 // (outside: the height field's faces face +z) within the bound goes back onto
 // it, and so does a zone vertex raised as much; one lowered (inside, as a
-// convex blend lies) and one raised beyond the bound stay, and so does a
-// vertex given the flat region's label past the edge: its place on the flat
-// plane lies beyond the slope's plane, off the flat face.
+// convex blend lies) and one raised beyond the bound stay. A vertex given the
+// flat region's label past the edge does not go onto the flat plane (that
+// place lies beyond the slope's plane, off the flat face): it lies outside
+// the slope's plane too, and goes to the nearest point behind both, on the
+// slope.
 TEST(PlanarRegions, FlatteningMovesOnlyVerticesJustOutsideTheirPlaneOntoItsFace) {
   EdgeField t(0.0);
   ASSERT_TRUE(t.planar(0) && t.planar(1));
@@ -310,14 +312,18 @@ TEST(PlanarRegions, FlatteningMovesOnlyVerticesJustOutsideTheirPlaneOntoItsFace)
   t.m.vert[zone].P()[2] += 0.05;
   t.m.vert[pastEdge].P()[2] = 0.05;
   const double maxMove = kH;  // one sample spacing
+  const Vec3 pastEdgeAt = es::positionOf(&t.m.vert[pastEdge]);
   EXPECT_EQ(es::flattenPlanarRegions(t.m, es::VertexFaceTable(t.m), t.zones,
                                      t.zones.support.regionPlanes, 1e-6, maxMove, 1),
-            2u);
+            3u);
   EXPECT_NEAR(t.m.vert[raised].P()[2], 0, 1e-6);
   EXPECT_NEAR(t.m.vert[zone].P()[2], 0, 1e-6);
   EXPECT_NEAR(t.m.vert[lowered].P()[2], -0.05, 1e-6);
   EXPECT_NEAR(t.m.vert[far].P()[2], 0.15, 1e-6);
-  EXPECT_NEAR(t.m.vert[pastEdge].P()[2], 0.05, 1e-6);
+  const es::Plane &slope = t.zones.support.regionPlanes[1];
+  const Vec3 onSlope = pastEdgeAt - slope.normal * (slope.normal * (pastEdgeAt - slope.point));
+  EXPECT_LT((es::positionOf(&t.m.vert[pastEdge]) - onSlope).Norm(), 1e-6);
+  EXPECT_LT(onSlope[2], 0);
   // Facing the other way, the lowered vertex is the one outside.
   t.m.vert[raised].P()[2] += 0.05;
   EXPECT_EQ(es::flattenPlanarRegions(t.m, es::VertexFaceTable(t.m), t.zones,
@@ -325,4 +331,79 @@ TEST(PlanarRegions, FlatteningMovesOnlyVerticesJustOutsideTheirPlaneOntoItsFace)
             1u);
   EXPECT_NEAR(t.m.vert[raised].P()[2], 0.05, 1e-6);
   EXPECT_NEAR(t.m.vert[lowered].P()[2], 0, 1e-6);
+}
+
+namespace {
+
+/// Vertex (i, j) of EdgeField's grid.
+std::size_t gridVertex(int i, int j) {
+  return std::size_t(j * (kNx + 1) + i);
+}
+
+}  // namespace
+
+// A vertex a fused scan bulged beyond a convex edge, outside both faces'
+// planes, where its nearest point behind both is on the edge: it goes there,
+// labelled with the flat region (its place on the flat plane lies off the
+// face) or with none. Faced the other way the edge is concave: the solid
+// reaches beyond each plane there, and it stays.
+TEST(PlanarRegions, FlatteningMovesAVertexBulgedBeyondAConvexEdgeOntoTheEdge) {
+  for (const int label : {0, es::kZone}) {
+    EdgeField t(0.0);
+    const std::size_t v = gridVertex(21, 8);
+    t.zones.vertexLabel[v] = label;
+    t.m.vert[v].P()[2] = 0.1;
+    const double maxMove = 2 * kH;
+    EXPECT_EQ(es::flattenPlanarRegions(t.m, es::VertexFaceTable(t.m), t.zones,
+                                       t.zones.support.regionPlanes, 1e-6, maxMove, -1),
+              0u);
+    EXPECT_EQ(es::flattenPlanarRegions(t.m, es::VertexFaceTable(t.m), t.zones,
+                                       t.zones.support.regionPlanes, 1e-6, maxMove, 1),
+              1u);
+    EXPECT_LT((es::positionOf(&t.m.vert[v]) - Vec3(kEdgeX, 8 * kH, 0)).Norm(), 1e-6)
+        << "label " << label;
+  }
+}
+
+// Beside one plane alone nothing shows that the solid lies behind it: the
+// slope curves (no plane), and a zone vertex raised above the flat plane
+// whose place there lies off the flat face stays.
+TEST(PlanarRegions, FlatteningNeedsTwoPlanesAroundAVertexOffItsFace) {
+  EdgeField t(0.2);
+  ASSERT_TRUE(t.planar(0));
+  ASSERT_FALSE(t.planar(1));
+  const std::size_t v = gridVertex(21, 8);
+  t.zones.vertexLabel[v] = es::kZone;
+  t.m.vert[v].P()[2] = 0.05;
+  EXPECT_EQ(es::flattenPlanarRegions(t.m, es::VertexFaceTable(t.m), t.zones,
+                                     t.zones.support.regionPlanes, 1e-6, 2 * kH, 1),
+            0u);
+  EXPECT_NEAR(t.m.vert[v].P()[2], 0.05, 1e-9);
+}
+
+// A region that is no plane between the flat and the slope (a boss on the
+// edge): its vertex just outside the planes stays while another of its own
+// rises beyond the bound (the region's own shape), and goes behind them once
+// none does.
+TEST(PlanarRegions, FlatteningLeavesARegionThatRisesBeyondThePlanes) {
+  EdgeField t(0.0);
+  const int boss = 2;  // no plane: regionPlanes has two entries
+  for (int i = 19; i <= 22; ++i)
+    for (int j = 6; j <= 10; ++j) {
+      t.zones.vertexLabel[gridVertex(i, j)] = boss;
+      t.zones.inRegion[gridVertex(i, j)] = 1;
+    }
+  const std::size_t low = gridVertex(20, 8), top = gridVertex(20, 10);
+  const double maxMove = 2 * kH;
+  t.m.vert[low].P()[2] = 0.05;
+  t.m.vert[top].P()[2] = 0.5;
+  EXPECT_EQ(es::flattenPlanarRegions(t.m, es::VertexFaceTable(t.m), t.zones,
+                                     t.zones.support.regionPlanes, 1e-6, maxMove, 1),
+            0u);
+  EXPECT_NEAR(t.m.vert[low].P()[2], 0.05, 1e-9);
+  t.m.vert[top].P()[2] = 0;
+  EXPECT_EQ(es::flattenPlanarRegions(t.m, es::VertexFaceTable(t.m), t.zones,
+                                     t.zones.support.regionPlanes, 1e-6, maxMove, 1),
+            1u);
+  EXPECT_NEAR(t.m.vert[low].P()[2], 0, 1e-6);
 }

@@ -15,7 +15,9 @@ Asserted, per scan:
 - the whole mesh is not worse and its RMS falls by at least MIN_RMS_FACTOR (mesh-distance in
   MeshLab's sampling mode); with --keep-rough-planes the output is the input's shape.
 Measured when this test was written (whole RMS factors): bosses x1.18 (noise 0) and x1.25
-(0.2 voxel), ribs x1.14 and x1.20; the raised features' max and RMS unchanged or lower.
+(0.2 voxel), ribs x1.14 and x1.20; the raised features' max and RMS unchanged or lower. Since
+vertices bulged beyond a convex edge or corner also go behind its planes: bosses x1.59 and
+x1.61, ribs x1.38 and x1.44, the raised features as before.
 
   check_raised_features.py --build BUILD --source SOURCE --work DIR
 """
@@ -38,7 +40,7 @@ except ImportError:
 SLAB_CELLS, CELL, SLAB_TOP = 20, 0.05, 0.4
 HEIGHTS_IN_VOXELS = (1.0, 1.5, 2.0, 3.0)
 NOISES = (0.0, 0.2)
-MIN_RMS_FACTOR = 1.1
+MIN_RMS_FACTOR = 1.3
 REFERENCE_SAMPLES = 400000
 
 

@@ -9,14 +9,19 @@ samples beside every edge, and the vertices labelled with a face that is a plane
 moved onto it where that place is on the face (SharpenOptions::flattenRoughPlanes,
 planar_regions.h: flattenPlanarRegions). Asserted (checks.check_min_factors): both inputs made,
 sharpened and measured, neither made worse (families.is_worse: max up > 2% or RMS up > 1%), and
-the reduction factors at least MIN_FACTORS. Measured (max / RMS factors): cross_prism x1.00 /
-x1.44, lblock_tilted x1.00 / x1.16; with the faces' own vertices flattened, not the zones'
-(the rule's first version), cross_prism x1.00 / x1.25, which fails its RMS floor; without the
-flattening (`--keep-rough-planes`) x1.00 / x1.00 for both.
+the reduction factors at least MIN_FACTORS. Beside a convex edge or corner the bulge also
+rises beyond the other face's plane, or lies on vertices of no planar region: such a vertex
+goes to the nearest point behind the planes of the planar regions around it (at least two,
+meeting convex).
+Measured (max / RMS factors): cross_prism x1.00 / x1.69, lblock_tilted x1.00 / x1.18; with
+only the faces' planes (the rule before the convex edges and corners) x1.00 / x1.44 and
+x1.00 / x1.16, which fails cross_prism's RMS floor; with the faces' own vertices flattened, not
+the zones' (the rule's first version), cross_prism x1.00 / x1.25; without the flattening
+(`--keep-rough-planes`) x1.00 / x1.00 for both.
 """
 import checks  # first: puts bench/quality on sys.path
 
-MIN_FACTORS = {"cross_prism": (0.98, 1.35), "lblock_tilted": (0.98, 1.1)}
+MIN_FACTORS = {"cross_prism": (0.98, 1.55), "lblock_tilted": (0.98, 1.1)}
 
 
 def main():

@@ -288,7 +288,9 @@ inline const std::vector<OptionSpec> &optionTable() {
        "evidence, the vertices of each region that is a plane in its core, and the feature "
        "zone's vertices labelled with it, that lie outside that plane by at most two sample "
        "spacings move onto it where that place is on the region's face: a scan's fusion "
-       "bulges its planes outwards beside each edge (off with --local-planes-only too).",
+       "bulges its planes outwards beside each edge. Beside a convex edge or corner, a vertex "
+       "that bulges beyond the other face's plane too, or belongs to no planar region, moves "
+       "to the nearest point behind the planes around it (off with --local-planes-only too).",
        T::Flag, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_FLAG(flattenRoughPlanes)},
       {"min_median_lift", "--min-lift", "", "Minimum median lift",

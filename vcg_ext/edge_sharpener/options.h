@@ -173,8 +173,11 @@ struct SharpenOptions {
   /// outside that plane, by at most kFlattenMaxSpacings, move onto it where
   /// that place is on the region's face (planar_regions.h:
   /// flattenPlanarRegions): a scan's fusion bulges its planes outwards for a
-  /// few samples beside each edge. Uses the planar regions' planes
-  /// (`regionPlanes`: off with it).
+  /// few samples beside each edge. Beside a convex edge or corner, a vertex
+  /// that bulges beyond the other face's plane too, or belongs to no planar
+  /// region, moves to the nearest point behind the planes of the planar
+  /// regions around it. Uses the planar regions' planes (`regionPlanes`: off
+  /// with it).
   bool flattenRoughPlanes = true;
   /// A feature goes back to rest whole when more than this fraction of its
   /// inserted vertices were refused by the other tests or moved across to

@@ -148,7 +148,8 @@ void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
 
 /// Auto method, on a rough input (a fused scan: its noise above the smooth
 /// bound) left whole: the vertices labelled with its planar regions onto
-/// their planes, on the regions' faces (flattenPlanarRegions, within
+/// their planes, on the regions' faces, and the vertices bulged beyond a
+/// convex edge or corner behind its planes (flattenPlanarRegions, within
 /// kFlattenMaxSpacings). \return the number moved.
 template <class MeshType>
 std::size_t flattenRoughPlanes(MeshType &m, const FeatureZones &zones,

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -242,6 +244,14 @@ int outwardSign(const MeshType &m) {
 /// its region's own samples and for the other regions' planes.
 inline constexpr int kFlattenRings = 3;
 
+/// How many rings of vertices flattenPlanarRegions reads around a vertex for
+/// the planes of the convex edge or corner a bulge rises beyond: past a
+/// fused scan's feature zone, widest at corners, to the faces' own vertices.
+inline constexpr int kFlattenCornerRings = 6;
+
+/// Planes nearer parallel than this meet on no edge for flattenPlanarRegions.
+inline constexpr double kFlattenParallelAngleRad = 5.0 * M_PI / 180.0;
+
 namespace detail {
 
 /// The vertices zones labels (a vertex added since has no label).
@@ -274,6 +284,80 @@ bool onRegionFace(const MeshType &m, const FeatureZones &zones,
   return true;
 }
 
+/// The planes of the planar regions that have own vertices in `around`,
+/// turned to face outwards (`outward`: outwardSign). Empty when two of them
+/// meet at a concave edge there (the centre of one's own vertices of
+/// `around` lies outside the other's plane by more than `slack`): beside a
+/// concave edge the solid reaches beyond each plane.
+template <class MeshType>
+std::vector<Plane> convexPlanesAround(const MeshType &m, const FeatureZones &zones,
+                                      const std::vector<Plane> &regionPlanes,
+                                      const std::vector<std::size_t> &around, int outward,
+                                      double slack) {
+  const std::size_t nv = labelledVertices(m, zones);
+  std::vector<int> regions;
+  std::vector<Vec3> centres;
+  std::vector<int> counts;
+  for (const std::size_t u : around) {
+    if (u >= nv || !zones.inRegion[u] || !regionPlaneOf(regionPlanes, zones.vertexLabel[u]))
+      continue;
+    const int r = zones.vertexLabel[u];
+    const auto k = std::size_t(std::find(regions.begin(), regions.end(), r) - regions.begin());
+    if (k == regions.size())
+      regions.push_back(r), centres.emplace_back(0, 0, 0), counts.push_back(0);
+    centres[k] += positionOf(&m.vert[u]);
+    ++counts[k];
+  }
+  std::vector<Plane> planes;
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    const Plane &plane = *regionPlaneOf(regionPlanes, regions[k]);
+    planes.push_back(Plane{plane.point, plane.normal * double(outward)});
+    centres[k] /= double(counts[k]);
+  }
+  for (std::size_t a = 0; a < planes.size(); ++a)
+    for (std::size_t b = 0; b < planes.size(); ++b)
+      if (a != b && planes[b].normal * (centres[a] - planes[b].point) > slack) return {};
+  return planes;
+}
+
+/// Where flattenPlanarRegions moves vertex `v` (label `r`) that a fused scan
+/// bulged beyond a convex edge or corner: the nearest point behind the
+/// planes of the planar regions around it (convexPlanesAround, at least two:
+/// one plane alone does not show that the solid lies behind it there), when
+/// `v` lies outside one of them by more than `minMove` and none by more than
+/// `maxMove`. Nothing, too, when an own vertex of `v`'s region in `around`
+/// lies farther than `maxMove` outside one: the region's own shape (a boss
+/// on a face) rises there, not a bulge.
+template <class MeshType>
+std::optional<Vec3> behindConvexPlanes(const MeshType &m, const FeatureZones &zones,
+                                       const std::vector<Plane> &regionPlanes, std::size_t v,
+                                       const std::vector<std::size_t> &around, double minMove,
+                                       double maxMove, int outward) {
+  const std::vector<Plane> planes =
+      convexPlanesAround(m, zones, regionPlanes, around, outward, minMove);
+  if (planes.size() < 2) return std::nullopt;
+  const Vec3 p = positionOf(&m.vert[v]);
+  const auto farthestOutside = [&](const Vec3 &x) {
+    double farthest = -std::numeric_limits<double>::infinity();
+    for (const Plane &plane : planes)
+      farthest = std::max(farthest, plane.normal * (x - plane.point));
+    return farthest;
+  };
+  const double outside = farthestOutside(p);
+  if (!(outside > minMove && outside <= maxMove)) return std::nullopt;
+  const int r = zones.vertexLabel[v];
+  const std::size_t nv = labelledVertices(m, zones);
+  if (r >= 0)
+    for (const std::size_t u : around)
+      if (u < nv && zones.inRegion[u] && zones.vertexLabel[u] == r &&
+          farthestOutside(positionOf(&m.vert[u])) > maxMove)
+        return std::nullopt;
+  const std::optional<Vec3> target =
+      nearestPointBehindPlanes(p, planes, minMove, kFlattenParallelAngleRad);
+  if (!target || !((*target - p).Norm() <= 2 * maxMove)) return std::nullopt;
+  return target;
+}
+
 }  // namespace detail
 
 /// Moves each vertex labelled with a region that is a plane (`regionPlanes`,
@@ -286,8 +370,14 @@ bool onRegionFace(const MeshType &m, const FeatureZones &zones,
 /// inflates its planes and bulges them outwards for a few samples beside
 /// every edge; the regions' cores fix the planes. A vertex inside its plane
 /// stays: a convex blend or bevel lies inside the planes it joins. So do
-/// vertices of several regions, vertices with none of their region's own
-/// vertices nearby and vertices farther off (the region's own shape).
+/// vertices with none of their region's own vertices nearby and vertices
+/// farther off (the region's own shape). Beside a convex edge or corner the
+/// bulge also rises beyond the other face's plane, or its vertices take the
+/// label of a small region that is no plane, or none: a vertex whose place
+/// on its own plane lies off its face, and a vertex of no planar region,
+/// moves to the nearest point behind the planes of the planar regions
+/// around it (kFlattenCornerRings; detail::behindConvexPlanes). That point
+/// lies nearer every point of the solid behind them than the vertex did.
 /// Decided on the positions as they were. `vf`: the faces of each vertex of
 /// `m` as it is. \return the number moved.
 template <class MeshType>
@@ -300,23 +390,31 @@ std::size_t flattenPlanarRegions(MeshType &m, const VertexFaceTable &vf, const F
   std::vector<std::uint32_t> mark(m.vert.size(), 0);
   std::vector<std::size_t> around, ring, next;
   std::uint32_t walk = 0;
-  for (std::size_t v = 0; v < nv; ++v) {
-    const int r = zones.vertexLabel[v];
-    const Plane *own = regionPlaneOf(regionPlanes, r);
-    if (m.vert[v].IsD() || !own) continue;
-    const Plane &pl = *own;
-    const Vec3 p = positionOf(&m.vert[v]);
-    const double offset = pl.normal * (p - pl.point);
-    if (!(outward * offset > minMove && std::abs(offset) <= maxMove)) continue;
-    const Vec3 target = p - pl.normal * offset;
+  const auto walkAround = [&](std::size_t v, int rings) {
     around.assign(1, v);
-    detail::forEachRing(m, vf, v, kFlattenRings, mark, ++walk, ring, next,
-                        [&](const auto &ringVertices) {
-                          around.insert(around.end(), ringVertices.begin(), ringVertices.end());
-                          return true;
-                        });
-    if (detail::onRegionFace(m, zones, regionPlanes, r, target, around))
-      moves.emplace_back(v, target);
+    detail::forEachRing(m, vf, v, rings, mark, ++walk, ring, next, [&](const auto &ringVertices) {
+      around.insert(around.end(), ringVertices.begin(), ringVertices.end());
+      return true;
+    });
+  };
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (m.vert[v].IsD()) continue;
+    const int r = zones.vertexLabel[v];
+    if (const Plane *own = regionPlaneOf(regionPlanes, r)) {
+      const Vec3 p = positionOf(&m.vert[v]);
+      const double offset = own->normal * (p - own->point);
+      if (!(outward * offset > minMove && std::abs(offset) <= maxMove)) continue;
+      const Vec3 target = p - own->normal * offset;
+      walkAround(v, kFlattenRings);
+      if (detail::onRegionFace(m, zones, regionPlanes, r, target, around)) {
+        moves.emplace_back(v, target);
+        continue;
+      }
+    }
+    walkAround(v, kFlattenCornerRings);
+    if (const std::optional<Vec3> target = detail::behindConvexPlanes(
+            m, zones, regionPlanes, v, around, minMove, maxMove, outward))
+      moves.emplace_back(v, *target);
   }
   for (const auto &[v, target] : moves) m.vert[v].P() = vcg::Point3<Scalar>::Construct(target);
   return moves.size();

@@ -254,6 +254,41 @@ inline bool onSideOf(const Plane &plane, const Vec3 &p, const Vec3 &reference) {
   return side == 0 || side * (plane.normal * (reference - plane.point)) > 0;
 }
 
+/// The point nearest `p` of the convex set that lies behind every plane of
+/// `planes` (opposite their normals), `p` itself when it lies there. The
+/// nearest point lies on one of the set's faces, edges or corners, each the
+/// meet of one, two or three of the planes: of those candidates, the nearest
+/// one behind every plane, within `slack`. Nothing when none is (pairs or
+/// triples of planes within `parallelAngleRad` of parallel span no edge or
+/// corner). Pure.
+inline std::optional<Vec3> nearestPointBehindPlanes(const Vec3 &p, const std::vector<Plane> &planes,
+                                                    double slack, double parallelAngleRad) {
+  const auto behindAll = [&](const Vec3 &x) {
+    for (const Plane &plane : planes)
+      if (!(plane.normal * (x - plane.point) <= slack)) return false;
+    return true;
+  };
+  if (behindAll(p)) return p;
+  std::optional<Vec3> nearest;
+  double nearestSquared = std::numeric_limits<double>::infinity();
+  const auto consider = [&](const std::optional<Vec3> &x) {
+    if (!x || !behindAll(*x)) return;
+    const double squared = (*x - p).SquaredNorm();
+    if (squared < nearestSquared) nearestSquared = squared, nearest = x;
+  };
+  const std::size_t n = planes.size();
+  for (std::size_t i = 0; i < n; ++i)
+    consider(p - planes[i].normal * (planes[i].normal * (p - planes[i].point)));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      consider(closestPointOnPlanePairLine(planes[i], planes[j], p, parallelAngleRad));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      for (std::size_t k = j + 1; k < n; ++k)
+        consider(intersectThreePlanes(planes[i], planes[j], planes[k], parallelAngleRad));
+  return nearest;
+}
+
 /// Interior angle at vertex `a` of triangle abc (the paper's weight).
 inline double cornerAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
   return angleBetween(b - a, c - a);
