@@ -82,6 +82,15 @@ class Table:
     def skip(self, name, half, why):
         self.rows.append(f"| {name} | {half} | {why} | | |")
 
+    def make_and_measure(self, name, half, made, reference, make):
+        """Makes `made` by make() ("" or why not) unless it exists, then measures it."""
+        if not os.path.exists(made):
+            why = make()
+            if why:
+                self.skip(name, half, f"not made: {why}")
+                return
+        self.measure(name, half, made, reference)
+
     def measure(self, name, half, made, reference):
         """Sharpens `made` (into made__METHOD.ply) and adds its row."""
         sharpened = f"{os.path.splitext(made)[0]}__{self.args.method}.ply"

@@ -86,12 +86,9 @@ def table(sampler, refs, half, work, args):
             table.skip(name, half.get(name, "?"), f"no cached {umr} input")
             continue
         made = os.path.join(work, f"{name}__{key}.ply")
-        if not os.path.exists(made):
-            why = decimate(server, source, made, kept, os.path.join(work, "run", name + key))
-            if why:
-                table.skip(name, half.get(name, "?"), f"not made: {why}")
-                continue
-        table.measure(name, half.get(name, "?"), made, ref)
+        table.make_and_measure(
+            name, half.get(name, "?"), made, ref,
+            lambda: decimate(server, source, made, kept, os.path.join(work, "run", name + key)))
     return table.text()
 
 

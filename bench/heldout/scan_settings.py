@@ -1,0 +1,89 @@
+#!/usr/bin/python3
+"""A fifth held-out check of the default method: depth scans at settings the benchmark never
+used. The benchmark's scans (bench/samplers/tsdf_scan.py: 26 depth views fused in Open3D's
+TSDF) all have a voxel of 1% of the diagonal and images 256 pixels wide; the rules for rough
+inputs (a scan left whole, its planar faces flattened) were chosen on its tuning half. Here the
+same scanner makes each reference at a finer and a coarser voxel, 0.7% and 1.4% of the
+diagonal, with images scaled to keep the pixels per voxel, depth noise of 0.1 voxel and another
+noise seed. No threshold is chosen on it; it says whether those rules hold at other scales.
+
+  /usr/bin/python3 bench/heldout/scan_settings.py [--build BUILD] [--shared DIR]
+      [--method auto] [--out FILE.md] [-- extra CLI options]
+
+References as in open3d_poisson.py. The scans are written to BUILD/heldout-scans and reused.
+"""
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import heldout  # noqa: E402
+
+NOISE_VOXELS = 0.1
+SEED = 7
+# (key, voxel as a fraction of the diagonal, image width in pixels, title)
+SAMPLERS = (
+    ("scan07", 0.007, 366, "tsdf_scan.py, 26 views, voxel 0.7% of the diagonal, images 366 "
+                           f"pixels wide, depth noise {NOISE_VOXELS} voxel, seed {SEED}"),
+    ("scan14", 0.014, 183, "tsdf_scan.py, 26 views, voxel 1.4% of the diagonal, images 183 "
+                           f"pixels wide, depth noise {NOISE_VOXELS} voxel, seed {SEED}"),
+)
+MADE = f"""Each reference is scanned by the benchmark's own scanner, `bench/samplers/tsdf_scan.py`
+(26 depth images rendered around the shape, Gaussian depth noise, fused by Open3D's
+ScalableTSDFVolume, truncation 4 voxels, extracted by its marching cubes, the largest connected
+component kept), at two settings the benchmark does not use: a voxel of 0.7% and of 1.4% of the
+diagonal (the benchmark: 1%), images 366 and 183 pixels wide (the benchmark's 256 scaled with
+the voxel), depth noise {NOISE_VOXELS} voxel, seed {SEED}. A mesh the sharpener refuses (not a
+closed manifold) is listed with its message. The geometric means leave out the references
+without sharp features (sphere, rocker-arm); chamfer-cube is left out, as its reference is
+another shape."""
+NOTES = """What it found (diagnosed by hand):
+
+- Written the day the rule "bulges beyond a convex edge or corner go behind its planes" was
+  added (2026-11-28, docs/results.md), to see whether it holds at other scales. The same scans
+  sharpened by the build before that rule: at 0.7% tuning max x1.02 / RMS x1.12, validation
+  x1.00 / x1.15, worse 1 of 20 (plate_holes); at 1.4% tuning x1.00 / x1.11, validation
+  x1.00 / x1.12, none worse. With it, the tables above.
+- cross_prism at 0.7% reads worse by its max (1.53% -> 1.57%, +2.6%) with 100,000 samples
+  a side. With a million: input 1.565%, output 1.555% (the same before the rule): not worse.
+  The max is its saddle corner, which the cameras do not see, as in the benchmark's scans; the
+  100,000 samples miss that point in the input and hit it in the output, whose faces moved.
+- plate_holes at 0.7% is worse by its RMS (0.179% -> 0.185%), the same before the rule. This
+  scan is not left whole as a rough input: its noise, 0.017 sample spacings, is under the
+  smooth bound (0.018), so the evidence guard judges it feature by feature (53% of the moves
+  refused, under the 60% bound of a smooth part made of planes) and sharpens it. 325 vertices
+  move away from the reference, the worst on the side walls at mid-height (x = -3.2, z = 7,
+  1.4-1.8 units outwards), where the plate's bottom fillet (radius 6.35, 2.5 voxels) meets the
+  wall. Not diagnosed further."""
+
+
+def scan(reference, out, fraction, width):
+    """The scan of `reference` into `out`; the scanner's message when it fails."""
+    scanner = os.path.join(heldout.SOURCE, "bench", "samplers", "tsdf_scan.py")
+    p = subprocess.run([sys.executable, scanner, reference, out, "--voxel-fraction",
+                        str(fraction), "--noise", str(NOISE_VOXELS), "--resolution", str(width),
+                        "--seed", str(SEED)], capture_output=True, text=True)
+    return "" if p.returncode == 0 and os.path.exists(out) else (p.stderr.strip() or "failed")
+
+
+def table(sampler, refs, half, work, args):
+    """One setting's table (heldout.Table)."""
+    key, fraction, width, title = sampler
+    table = heldout.Table(title, args)
+    for name, ref in sorted(refs.items()):
+        made = os.path.join(work, f"{name}__{key}.ply")
+        table.make_and_measure(name, half.get(name, "?"), made, ref,
+                               lambda: scan(ref, made, fraction, width))
+    return table.text()
+
+
+def main():
+    args = heldout.parse_args(__doc__)
+    heldout.require_open3d("scan_settings")
+    heldout.run_samplers(args, SAMPLERS, table, os.path.join(args.build, "heldout-scans"),
+                         "Held-out check: depth scans at other settings", "scan_settings.py", 5,
+                         MADE, NOTES)
+
+
+if __name__ == "__main__":
+    main()
