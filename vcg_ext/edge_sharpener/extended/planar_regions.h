@@ -320,14 +320,15 @@ std::vector<Plane> convexPlanesAround(const MeshType &m, const FeatureZones &zon
   return planes;
 }
 
-/// Where flattenPlanarRegions moves vertex `v` (label `r`) that a fused scan
-/// bulged beyond a convex edge or corner: the nearest point behind the
-/// planes of the planar regions around it (convexPlanesAround, at least two:
-/// one plane alone does not show that the solid lies behind it there), when
-/// `v` lies outside one of them by more than `minMove` and none by more than
-/// `maxMove`. Nothing, too, when an own vertex of `v`'s region in `around`
-/// lies farther than `maxMove` outside one: the region's own shape (a boss
-/// on a face) rises there, not a bulge.
+/// Where flattenPlanarRegions moves vertex `v` that a fused scan bulged
+/// beyond a convex edge or corner: the nearest point behind the planes of
+/// the planar regions around it (convexPlanesAround, at least two: one plane
+/// alone does not show that the solid lies behind it there), when `v` lies
+/// outside one of them by more than `minMove` and none by more than
+/// `maxMove`, and that point lies within twice `maxMove` (planes meeting at
+/// an acute edge put it far). Nothing, too, when an own vertex of `v`'s
+/// region in `around` lies farther than `maxMove` outside one: the region's
+/// own shape (a boss on a face) rises there, not a bulge.
 template <class MeshType>
 std::optional<Vec3> behindConvexPlanes(const MeshType &m, const FeatureZones &zones,
                                        const std::vector<Plane> &regionPlanes, std::size_t v,
