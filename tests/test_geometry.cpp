@@ -422,3 +422,11 @@ TEST(NearestPointBehindPlanes, ParallelPlanes) {
                                     Plane{Vec3(0, 0, -1), Vec3(0, 0, 1)}};
   EXPECT_FALSE(es::nearestPointBehindPlanes(Vec3(0, 0, 0), apart, 1e-9, 1 * kDeg).has_value());
 }
+
+TEST(ProjectOntoPlane, TheFootOfThePerpendicular) {
+  const Plane tilted{Vec3(1, 2, 3), unit(Vec3(1, -2, 2))};
+  const Vec3 p(4, -1, 0.5);
+  const Vec3 foot = es::projectOntoPlane(tilted, p);
+  EXPECT_NEAR(planeOffset(tilted, foot), 0, 1e-12);
+  EXPECT_LT(((p - foot) ^ tilted.normal).Norm(), 1e-12);  // along the normal
+}

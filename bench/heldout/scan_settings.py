@@ -13,21 +13,26 @@ noise seed. No threshold is chosen on it; it says whether those rules hold at ot
 References as in open3d_poisson.py. The scans are written to BUILD/heldout-scans and reused.
 """
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import heldout  # noqa: E402
+import run as quality_run  # noqa: E402  (bench/quality, on the path heldout set)
 
 NOISE_VOXELS = 0.1
 SEED = 7
-# (key, voxel as a fraction of the diagonal, image width in pixels, title)
-SAMPLERS = (
-    ("scan07", 0.007, 366, "tsdf_scan.py, 26 views, voxel 0.7% of the diagonal, images 366 "
-                           f"pixels wide, depth noise {NOISE_VOXELS} voxel, seed {SEED}"),
-    ("scan14", 0.014, 183, "tsdf_scan.py, 26 views, voxel 1.4% of the diagonal, images 183 "
-                           f"pixels wide, depth noise {NOISE_VOXELS} voxel, seed {SEED}"),
-)
+TIMEOUT = 600  # seconds per scan, the quality benchmark's default
+SCANNER = [quality_run.SYSTEM_PYTHON,
+           os.path.join(heldout.SOURCE, "bench", "samplers", "tsdf_scan.py")]
+
+
+def setting(key, fraction, width):
+    """(key, voxel as a fraction of the diagonal, image width in pixels, title)."""
+    return (key, fraction, width, f"tsdf_scan.py, 26 views, voxel {fraction * 100:g}% of the "
+            f"diagonal, images {width} pixels wide, depth noise {NOISE_VOXELS} voxel, seed {SEED}")
+
+
+SAMPLERS = (setting("scan07", 0.007, 366), setting("scan14", 0.014, 183))
 MADE = f"""Each reference is scanned by the benchmark's own scanner, `bench/samplers/tsdf_scan.py`
 (26 depth images rendered around the shape, Gaussian depth noise, fused by Open3D's
 ScalableTSDFVolume, truncation 4 voxels, extracted by its marching cubes, the largest connected
@@ -58,12 +63,11 @@ NOTES = """What it found (diagnosed by hand):
 
 
 def scan(reference, out, fraction, width):
-    """The scan of `reference` into `out`; the scanner's message when it fails."""
-    scanner = os.path.join(heldout.SOURCE, "bench", "samplers", "tsdf_scan.py")
-    p = subprocess.run([sys.executable, scanner, reference, out, "--voxel-fraction",
-                        str(fraction), "--noise", str(NOISE_VOXELS), "--resolution", str(width),
-                        "--seed", str(SEED)], capture_output=True, text=True)
-    return "" if p.returncode == 0 and os.path.exists(out) else (p.stderr.strip() or "failed")
+    """The scan of `reference` into `out`: "" or the scanner's message when it fails."""
+    made, _, why = quality_run.run_json(
+        [*SCANNER, reference, out, "--voxel-fraction", str(fraction), "--noise",
+         str(NOISE_VOXELS), "--resolution", str(width), "--seed", str(SEED)], TIMEOUT)
+    return "" if made is not None else why
 
 
 def table(sampler, refs, half, work, args):

@@ -118,9 +118,8 @@ std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::siz
     const std::uint32_t slot = candidates.slot[v];
     if (slot == detail::CandidateFaces::kNone || candidates.facesOf[slot].empty()) continue;
     const std::vector<std::uint32_t> &faces = candidates.facesOf[slot];
-    const Plane &pl = zones.support.plane(v);
     const Vec3 p = positionOf(&m.vert[v]);
-    const Vec3 target = p - pl.normal * (pl.normal * (p - pl.point));
+    const Vec3 target = projectOntoPlane(zones.support.plane(v), p);
     const double step = (target - p).Norm();
     // A move below the mesh's float resolution changes nothing: not counted.
     if (vcg::Point3<Scalar>::Construct(target) == m.vert[v].cP()) continue;

@@ -254,6 +254,11 @@ inline bool onSideOf(const Plane &plane, const Vec3 &p, const Vec3 &reference) {
   return side == 0 || side * (plane.normal * (reference - plane.point)) > 0;
 }
 
+/// The foot of the perpendicular from `p` onto `plane`. Pure.
+inline Vec3 projectOntoPlane(const Plane &plane, const Vec3 &p) {
+  return p - plane.normal * (plane.normal * (p - plane.point));
+}
+
 /// The point nearest `p` of the convex set that lies behind every plane of
 /// `planes` (opposite their normals), `p` itself when it lies there. The
 /// nearest point lies on one of the set's faces, edges or corners, each the
@@ -277,8 +282,7 @@ inline std::optional<Vec3> nearestPointBehindPlanes(const Vec3 &p, const std::ve
     if (squared < nearestSquared) nearestSquared = squared, nearest = x;
   };
   const std::size_t n = planes.size();
-  for (std::size_t i = 0; i < n; ++i)
-    consider(p - planes[i].normal * (planes[i].normal * (p - planes[i].point)));
+  for (std::size_t i = 0; i < n; ++i) consider(projectOntoPlane(planes[i], p));
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j)
       consider(closestPointOnPlanePairLine(planes[i], planes[j], p, parallelAngleRad));
