@@ -108,6 +108,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"exact_sampling", r.evidence.exactSampling},
                      {"whole_mesh_left", r.evidence.wholeMeshLeft},
                      {"flattened_vertices", r.evidence.flattenedVertices},
+                     {"grown_planes", r.evidence.grownPlanes},
                      {"faces_given_back", r.evidence.facesGivenBack},
                      {"resting_vertices_removed", r.evidence.restingVerticesRemoved},
                      {"vertices_removed", r.evidence.verticesRemoved},

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <map>
+#include <random>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -14,8 +15,10 @@
 #endif
 
 #include "edge_sharpener/edge_sharpener.h"
+#include "edge_sharpener/extended/plane_patches.h"
 #include "edge_sharpener/util/fast_topology.h"
 #include "edge_sharpener/util/mesh_types.h"
+#include "hand_built_meshes.h"
 #include "test_meshes/shapes.h"
 
 namespace es = edge_sharpener;
@@ -286,6 +289,37 @@ TEST(Determinism, IndicesWhereKeepsIndexOrderForAnyThreadCount) {
         << threads << " threads";
   }
   EXPECT_TRUE(es::detail::indicesWhere(0, keep, 0).empty());
+}
+
+// A rough input's flattening (planar_regions.h: flattenPlanarRegions) decides
+// on every core: a rough box of over 50,000 vertices, flattened onto its
+// grown planes (plane_patches.h), comes out the same for any thread count.
+TEST(Determinism, FlatteningIsIdenticalForAnyThreadCount) {
+  es::Mesh rough;
+  const int n = 100;
+  es::hand_built::voxelSurface(rough, {{0, 0, 0}}, n);
+  ASSERT_GT(rough.vert.size(), std::size_t(es::kParallelMin));
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> offset(-0.2 / n, 0.2 / n);
+  for (auto &v : rough.vert)
+    v.P() += es::Mesh::CoordType(offset(random), offset(random), offset(random));
+  const es::VertexFaceTable vf(rough);
+  const es::PlanePatches patches =
+      es::growPlanePatches(rough, vf, 1.0 / n, es::PlanePatchSettings{});
+  ASSERT_GE(patches.count(), 6u);
+  std::vector<es::Mesh::CoordType> expected;
+  for (const int threads : {1, 2, 3, 8}) {
+    ThreadCount scope(threads);
+    es::Mesh m;
+    vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(m, rough);
+    const std::size_t moved = es::flattenPlanarRegions(m, vf, patches.labels, patches.planes,
+                                                       1e-3 / n, 2.0 / n, es::outwardSign(m));
+    EXPECT_GT(moved, rough.vert.size() / 4) << threads << " threads";
+    std::vector<es::Mesh::CoordType> positions;
+    for (const auto &v : m.vert) positions.push_back(v.cP());
+    if (expected.empty()) expected = positions;
+    EXPECT_TRUE(positions == expected) << threads << " threads";
+  }
 }
 
 // The output's normals are computed on every core; they are the ones vcglib's

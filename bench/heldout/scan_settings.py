@@ -59,7 +59,12 @@ NOTES = """What it found (diagnosed by hand):
   refused, under the 60% bound of a smooth part made of planes) and sharpens it. 325 vertices
   move away from the reference, the worst on the side walls at mid-height (x = -3.2, z = 7,
   1.4-1.8 units outwards), where the plate's bottom fillet (radius 6.35, 2.5 voxels) meets the
-  wall. Not diagnosed further."""
+  wall. Not diagnosed further.
+- Planes grown face by face (2026-11-28, the same day; chosen on the benchmark's tuning half):
+  at 0.7% tuning x1.16 / x1.19 -> x1.20 / x1.18, validation x1.00 / x1.29 -> x1.16 / x1.43,
+  worse 2 -> 1 of 20 (cross_prism's max now 1.53% -> 1.53%); at 1.4% tuning x1.07 / x1.21 ->
+  x1.11 / x1.32, validation x1.08 / x1.38 -> x1.13 / x1.53, none worse. plate_holes at 0.7%
+  is sharpened (not left whole), so they do not reach it."""
 
 
 def scan(reference, out, fraction, width):

@@ -21,7 +21,8 @@ Asserted:
   (2026-11-27: RMS x1.000 -> x1.161 at noise 0, x1.000 -> x1.227 at 0.2 voxel) and when the
   feature zones beside them were flattened too (the same day: x1.246 and x1.330), and when
   bulges beyond a convex edge or corner came to go behind its planes (2026-11-28: x1.414 and
-  x1.419).
+  x1.419), and when planes grown face by face were flattened too (the same day: x1.629 and
+  x1.595; its other figures, raised by earlier rules, were measured again then).
 """
 import checks  # first: puts bench/quality on sys.path
 import families
@@ -30,19 +31,19 @@ MARGIN = 0.9
 MULTIPLIER = 2.0
 # (input, resolution) -> method -> (max factor, RMS factor, worse count of 3), as measured
 MEASURED = {
-    ("vdb", "1%"): {"auto": (1.569, 2.752, 0), "paper": (1.000, 1.030, 0),
+    ("vdb", "1%"): {"auto": (1.610, 3.377, 0), "paper": (1.000, 1.030, 0),
         "extended": (1.647, 3.019, 0),
         "unsharp-mask": (1.177, 1.397, 0)},
-    ("ier", "1%"): {"auto": (3.233, 30.713, 0), "paper": (1.702, 7.853, 0),
+    ("ier", "1%"): {"auto": (4.512, 52.611, 0), "paper": (1.702, 7.853, 0),
         "extended": (3.233, 30.852, 0),
         "unsharp-mask": (1.240, 1.332, 0)},
-    ("poisson", "depth 7"): {"auto": (1.029, 1.070, 0), "paper": (1.014, 1.064, 0),
+    ("poisson", "depth 7"): {"auto": (1.277, 1.775, 0), "paper": (1.014, 1.064, 0),
         "extended": (1.196, 1.380, 0),
         "unsharp-mask": (1.117, 1.171, 0)},
-    ("scan", "noise 0"): {"auto": (1.000, 1.414, 0), "paper": (1.000, 0.992, 2),
+    ("scan", "noise 0"): {"auto": (1.310, 1.629, 0), "paper": (1.000, 0.992, 2),
         "extended": (0.881, 0.946, 3),
         "unsharp-mask": (0.890, 0.880, 3)},
-    ("scan", "noise 0.2 voxel"): {"auto": (1.007, 1.419, 0), "paper": (1.002, 0.989, 2),
+    ("scan", "noise 0.2 voxel"): {"auto": (1.147, 1.595, 0), "paper": (1.002, 0.989, 2),
         "extended": (0.965, 0.958, 3),
         "unsharp-mask": (0.891, 0.879, 3)},
 }

@@ -17,7 +17,9 @@ Asserted, per scan:
 Measured when this test was written (whole RMS factors): bosses x1.18 (noise 0) and x1.25
 (0.2 voxel), ribs x1.14 and x1.20; the raised features' max and RMS unchanged or lower. Since
 vertices bulged beyond a convex edge or corner also go behind its planes: bosses x1.59 and
-x1.61, ribs x1.38 and x1.44, the raised features as before.
+x1.61, ribs x1.38 and x1.44, the raised features as before. Since planes grown face by face
+are flattened too: bosses x2.03 and x1.82, ribs x1.61 and x1.56, the raised features as before
+(their RMS within 0.1%).
 
   check_raised_features.py --build BUILD --source SOURCE --work DIR
 """
@@ -40,7 +42,7 @@ except ImportError:
 SLAB_CELLS, CELL, SLAB_TOP = 20, 0.05, 0.4
 HEIGHTS_IN_VOXELS = (1.0, 1.5, 2.0, 3.0)
 NOISES = (0.0, 0.2)
-MIN_RMS_FACTOR = 1.3
+MIN_RMS_FACTOR = 1.45
 REFERENCE_SAMPLES = 400000
 
 

@@ -17,11 +17,14 @@ Measured (max / RMS factors): cross_prism x1.00 / x1.69, lblock_tilted x1.00 / x
 only the faces' planes (the rule before the convex edges and corners) x1.00 / x1.44 and
 x1.00 / x1.16, which fails cross_prism's RMS floor; with the faces' own vertices flattened, not
 the zones' (the rule's first version), cross_prism x1.00 / x1.25; without the flattening
-(`--keep-rough-planes`) x1.00 / x1.00 for both.
+(`--keep-rough-planes`) x1.00 / x1.00 for both. The segmentation merges lblock_tilted's faces
+across its rounded edges (4 of 63 regions are planes); planes grown face by face on the
+flattened scan (plane_patches.h: growPlanePatches) give it x1.51 / x1.60 (x1.00 / x1.18
+without them), cross_prism x1.00 / x1.75.
 """
 import checks  # first: puts bench/quality on sys.path
 
-MIN_FACTORS = {"cross_prism": (0.98, 1.55), "lblock_tilted": (0.98, 1.1)}
+MIN_FACTORS = {"cross_prism": (0.98, 1.55), "lblock_tilted": (1.4, 1.45)}
 
 
 def main():

@@ -290,7 +290,10 @@ inline const std::vector<OptionSpec> &optionTable() {
        "spacings move onto it where that place is on the region's face: a scan's fusion "
        "bulges its planes outwards beside each edge. Beside a convex edge or corner, a vertex "
        "that bulges beyond the other face's plane too, or belongs to no planar region, moves "
-       "to the nearest point behind the planes around it (off with --local-planes-only too).",
+       "to the nearest point behind the planes around it. Where that moved at least 1% of "
+       "the vertices, the same again on planes grown face by face (each face of the solid, "
+       "which the segmentation may merge across a rounded edge, kept only beside another "
+       "plane meeting it at --min-feature-angle). Off with --local-planes-only too.",
        T::Flag, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_FLAG(flattenRoughPlanes)},
       {"min_median_lift", "--min-lift", "", "Minimum median lift",

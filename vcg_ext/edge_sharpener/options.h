@@ -176,8 +176,11 @@ struct SharpenOptions {
   /// few samples beside each edge. Beside a convex edge or corner, a vertex
   /// that bulges beyond the other face's plane too, or belongs to no planar
   /// region, moves to the nearest point behind the planes of the planar
-  /// regions around it. Uses the planar regions' planes (`regionPlanes`: off
-  /// with it).
+  /// regions around it. Where that moved a share of the vertices (the
+  /// planes bulge as a fused scan's do), the same again on planes grown face
+  /// by face (plane_patches.h: growPlanePatches), which the segmentation may
+  /// have merged across a rounded edge. Uses the planar regions' planes
+  /// (`regionPlanes`: off with it).
   bool flattenRoughPlanes = true;
   /// A feature goes back to rest whole when more than this fraction of its
   /// inserted vertices were refused by the other tests or moved across to

@@ -107,6 +107,7 @@ struct EvidenceStats {
   std::size_t verticesRemoved = 0;         ///< inserted vertices deleted by the two above
   std::size_t facesRemoved = 0;            ///< faces deleted by the two above
   std::size_t flattenedVertices = 0;       ///< left whole, rough: vertices of planes flattened
+  std::size_t grownPlanes = 0;             ///< ...and planes grown face by face for it
 };
 
 /// Extended method: segmentation and zone labelling.
@@ -222,7 +223,8 @@ inline void formatGuards(std::ostream &s, const SharpenReport &r) {
     << (r.evidence.exactSampling ? ", sampled exactly on its surface" : "") << verdict << "; ";
   if (r.evidence.flattenedVertices > 0)
     s << r.evidence.flattenedVertices
-      << " vertices of the rough input's planar regions flattened onto their planes; ";
+      << " vertices of the rough input's planar regions flattened onto their planes ("
+      << r.evidence.grownPlanes << " planes grown face by face); ";
   s << r.evidence.facesGivenBack << " split faces at rest given back their input face, "
     << r.evidence.restingVerticesRemoved << " other inserted vertices at rest removed\n";
 }

@@ -5,6 +5,7 @@
 #include <vcg/complex/complex.h>
 
 #include <optional>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 // (vcglib's algorithm headers need complex.h first)
@@ -12,6 +13,7 @@
 
 #include "../cleanup.h"
 #include "../colorize.h"
+#include "../extended/plane_patches.h"
 #include "../extended_method.h"
 #include "../filters.h"
 #include "../guards/feature_evidence.h"
@@ -150,17 +152,38 @@ void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
 /// bound) left whole: the vertices labelled with its planar regions onto
 /// their planes, on the regions' faces, and the vertices bulged beyond a
 /// convex edge or corner behind its planes (flattenPlanarRegions, within
-/// kFlattenMaxSpacings). \return the number moved.
+/// kFlattenMaxSpacings). Where that moved a share of the vertices
+/// (kGrownPlanesEvidence: the planes bulge as a fused scan's do; an exact
+/// mesh's planes move none), the same again on planes grown face by face
+/// (growPlanePatches), which the segmentation may have merged across a
+/// rounded edge. \return the number of vertices moved and of planes grown.
 template <class MeshType>
-std::size_t flattenRoughPlanes(MeshType &m, const FeatureZones &zones,
-                               const SurfaceMeasures &surface, const SharpenOptions &opt) {
+std::pair<std::size_t, std::size_t> flattenRoughPlanes(MeshType &m, const FeatureZones &zones,
+                                                       const SurfaceMeasures &surface,
+                                                       const SharpenOptions &opt) {
   if (!opt.flattenRoughPlanes || zones.support.regionPlanes.empty() ||
       !(surface.noiseSpacings > opt.maxSmoothNoiseSpacings))
-    return 0;
+    return {0, 0};
   const double spacing = spacingUnit(zones.support);
-  return flattenPlanarRegions(m, VertexFaceTable(m), zones, zones.support.regionPlanes,
-                              kFlattenMinSpacings * spacing, kFlattenMaxSpacings * spacing,
-                              outwardSign(m));
+  const double minMove = kFlattenMinSpacings * spacing, maxMove = kFlattenMaxSpacings * spacing;
+  const int outward = outwardSign(m);
+  const VertexFaceTable vf(m);  // the flattening moves vertices only
+  using Coord = typename MeshType::CoordType;
+  std::vector<Coord> input(m.vert.size());
+  for (std::size_t v = 0; v < m.vert.size(); ++v) input[v] = m.vert[v].cP();
+  const std::size_t onRegions =
+      flattenPlanarRegions(m, vf, zones, zones.support.regionPlanes, minMove, maxMove, outward);
+  std::size_t grown = 0;
+  if (double(onRegions) >= kGrownPlanesEvidence * double(m.vn)) {
+    PlanePatchSettings settings;
+    settings.maxTurnRad = settings.pairAngleRad = opt.minFeatureAngleRad;
+    const PlanePatches patches = growPlanePatches(m, vf, spacing, settings);
+    grown = patches.count();
+    flattenPlanarRegions(m, vf, patches.labels, patches.planes, minMove, maxMove, outward);
+  }
+  std::size_t moved = 0;
+  for (std::size_t v = 0; v < m.vert.size(); ++v) moved += !(m.vert[v].cP() == input[v]);
+  return {moved, grown};
 }
 
 template <class MeshType>
@@ -248,7 +271,8 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
     report.evidence.verticesRemoved = std::size_t(verticesBefore - m.vn);
     report.evidence.facesRemoved = std::size_t(facesBefore - m.fn);
     if (report.evidence.wholeMeshLeft)
-      report.evidence.flattenedVertices = detail::flattenRoughPlanes(m, zones, surface, opt);
+      std::tie(report.evidence.flattenedVertices, report.evidence.grownPlanes) =
+          detail::flattenRoughPlanes(m, zones, surface, opt);
   }
   detail::finish(m, labels, opt, report);
   return report;

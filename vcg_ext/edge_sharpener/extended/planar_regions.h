@@ -249,6 +249,11 @@ inline constexpr int kFlattenRings = 3;
 /// fused scan's feature zone, widest at corners, to the faces' own vertices.
 inline constexpr int kFlattenCornerRings = 6;
 
+/// The share of a rough input's vertices that flattening onto its regions'
+/// planes must move before planes grown face by face are flattened too
+/// (flattenRoughPlanes): the planes bulge as a fused scan's do.
+inline constexpr double kGrownPlanesEvidence = 0.01;
+
 /// Planes nearer parallel than this meet on no edge for flattenPlanarRegions.
 inline constexpr double kFlattenParallelAngleRad = 5.0 * M_PI / 180.0;
 
@@ -386,39 +391,52 @@ std::size_t flattenPlanarRegions(MeshType &m, const VertexFaceTable &vf, const F
                                  const std::vector<Plane> &regionPlanes, double minMove,
                                  double maxMove, int outward) {
   using Scalar = typename MeshType::ScalarType;
-  const std::size_t nv = detail::labelledVertices(m, zones);
-  std::vector<std::pair<std::size_t, Vec3>> moves;
-  std::vector<std::uint32_t> mark(m.vert.size(), 0);
-  std::vector<std::size_t> around, ring, next;
-  std::uint32_t walk = 0;
-  const auto walkAround = [&](std::size_t v, int rings) {
-    around.assign(1, v);
-    detail::forEachRing(m, vf, v, rings, mark, ++walk, ring, next, [&](const auto &ringVertices) {
-      around.insert(around.end(), ringVertices.begin(), ringVertices.end());
-      return true;
-    });
-  };
-  for (std::size_t v = 0; v < nv; ++v) {
-    if (m.vert[v].IsD()) continue;
-    const int r = zones.vertexLabel[v];
-    if (const Plane *own = regionPlaneOf(regionPlanes, r)) {
-      const Vec3 p = positionOf(&m.vert[v]);
-      const double offset = own->normal * (p - own->point);
-      if (!(outward * offset > minMove && std::abs(offset) <= maxMove)) continue;
-      const Vec3 target = p - own->normal * offset;
-      walkAround(v, kFlattenRings);
-      if (detail::onRegionFace(m, zones, regionPlanes, r, target, around)) {
-        moves.emplace_back(v, target);
-        continue;
+  const std::int64_t nv = std::int64_t(detail::labelledVertices(m, zones));
+  // Contiguous ranges of vertices decided on every core, each range's moves
+  // made after all are decided (the same for any thread count).
+  const int ranges = nv > kParallelMin ? detail::maxThreads() : 1;
+  std::vector<detail::PerThread<std::vector<std::pair<std::size_t, Vec3>>>> movesOf(ranges);
+#pragma omp parallel for schedule(static, 1) num_threads(ranges)
+  for (int t = 0; t < ranges; ++t) {
+    auto &moves = movesOf[t].value;
+    std::vector<std::uint32_t> mark(m.vert.size(), 0);
+    std::vector<std::size_t> around, ring, next;
+    std::uint32_t walk = 0;
+    const auto walkAround = [&](std::size_t v, int rings) {
+      around.assign(1, v);
+      detail::forEachRing(m, vf, v, rings, mark, ++walk, ring, next, [&](const auto &ringVertices) {
+        around.insert(around.end(), ringVertices.begin(), ringVertices.end());
+        return true;
+      });
+    };
+    for (std::int64_t vi = nv * t / ranges; vi < nv * (t + 1) / ranges; ++vi) {
+      const std::size_t v = std::size_t(vi);
+      if (m.vert[v].IsD()) continue;
+      const int r = zones.vertexLabel[v];
+      if (const Plane *own = regionPlaneOf(regionPlanes, r)) {
+        const Vec3 p = positionOf(&m.vert[v]);
+        const double offset = own->normal * (p - own->point);
+        if (!(outward * offset > minMove && std::abs(offset) <= maxMove)) continue;
+        const Vec3 target = p - own->normal * offset;
+        walkAround(v, kFlattenRings);
+        if (detail::onRegionFace(m, zones, regionPlanes, r, target, around)) {
+          moves.emplace_back(v, target);
+          continue;
+        }
       }
+      walkAround(v, kFlattenCornerRings);
+      if (const std::optional<Vec3> target = detail::behindConvexPlanes(
+              m, zones, regionPlanes, v, around, minMove, maxMove, outward))
+        moves.emplace_back(v, *target);
     }
-    walkAround(v, kFlattenCornerRings);
-    if (const std::optional<Vec3> target = detail::behindConvexPlanes(
-            m, zones, regionPlanes, v, around, minMove, maxMove, outward))
-      moves.emplace_back(v, *target);
   }
-  for (const auto &[v, target] : moves) m.vert[v].P() = vcg::Point3<Scalar>::Construct(target);
-  return moves.size();
+  std::size_t moved = 0;
+  for (const auto &part : movesOf) {
+    for (const auto &[v, target] : part.value)
+      m.vert[v].P() = vcg::Point3<Scalar>::Construct(target);
+    moved += part.value.size();
+  }
+  return moved;
 }
 
 }  // namespace edge_sharpener
