@@ -107,6 +107,16 @@ struct CoreMoments {
   }
 };
 
+/// Whether a core (its moments `c`: area, distances about its plane, the
+/// normals of its halves) is a plane: its faces within `s.maxRmsSpacings`
+/// RMS of it, its halves turned by at most `s.maxBendRad`.
+inline bool coreIsPlane(const CoreMoments &c, double spacing, const PlanarRegionSettings &s) {
+  const double rms = std::sqrt(c.distance2 / c.area);
+  const double bend = std::max(angleBetween(c.halfNormals[0], c.halfNormals[1]),
+                               angleBetween(c.halfNormals[2], c.halfNormals[3]));
+  return rms <= s.maxRmsSpacings * spacing && bend <= s.maxBendRad;
+}
+
 /// Adds visit(moments of r, r, face) over the core faces into `core`: fixed
 /// blocks of faces (in face order) summed on every core, each block's sums
 /// per region then added in block order (the same sums for any thread count).
@@ -212,14 +222,9 @@ std::vector<Plane> planarRegionPlanes(const MeshType &m, const VertexFaceTable &
     if (p.normal.SquaredNorm() == 0) return;
     for (int k = 0; k < 2; ++k) c.halfNormals[2 * k + ((x - p.point) * axes[r][k] > 0)] += n;
   });
-  for (int r = 0; r < regions; ++r) {
-    const detail::CoreMoments &c = core[r];
-    if (plane[r].normal.SquaredNorm() == 0) continue;
-    const double rms = std::sqrt(c.distance2 / c.area);
-    const double bend = std::max(angleBetween(c.halfNormals[0], c.halfNormals[1]),
-                                 angleBetween(c.halfNormals[2], c.halfNormals[3]));
-    if (!(rms <= s.maxRmsSpacings * spacing) || !(bend <= s.maxBendRad)) plane[r] = none;
-  }
+  for (int r = 0; r < regions; ++r)
+    if (plane[r].normal.SquaredNorm() > 0 && !detail::coreIsPlane(core[r], spacing, s))
+      plane[r] = none;
   return plane;
 }
 

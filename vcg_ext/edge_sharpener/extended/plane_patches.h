@@ -58,29 +58,6 @@ struct PlanePatches {
 
 namespace detail {
 
-/// Per face, the faces across its three edges (-1: none).
-template <class MeshType>
-std::vector<std::array<std::int32_t, 3>> faceNeighbours(const MeshType &m,
-                                                        const VertexFaceTable &vf) {
-  std::vector<std::array<std::int32_t, 3>> across(m.face.size(), {-1, -1, -1});
-  for (std::size_t fi = 0; fi < m.face.size(); ++fi) {
-    const auto &f = m.face[fi];
-    if (f.IsD()) continue;
-    for (int k = 0; k < 3; ++k) {
-      const auto *b = f.cV((k + 1) % 3);
-      for (const std::uint32_t *g = vf.begin(vcg::tri::Index(m, f.cV(k)));
-           g != vf.end(vcg::tri::Index(m, f.cV(k))); ++g) {
-        const auto &h = m.face[*g];
-        if (*g != fi && (h.cV(0) == b || h.cV(1) == b || h.cV(2) == b)) {
-          across[fi][k] = std::int32_t(*g);
-          break;
-        }
-      }
-    }
-  }
-  return across;
-}
-
 /// A face's centroid, and its normal times its area.
 template <class MeshType>
 Vec3 faceCentre(const MeshType &m, std::size_t fi) {
@@ -94,31 +71,28 @@ Vec3 faceAreaNormal(const MeshType &m, std::size_t fi) {
   return ((positionOf(f.cV(1)) - p0) ^ (positionOf(f.cV(2)) - p0)) / 2.0;
 }
 
-/// Whether the faces `members` of `m` make a plane by the regions' tests:
-/// RMS distance and the bend between the halves split across either
-/// principal axis.
+/// Whether the faces `members` of `m` make a plane by the regions' tests
+/// (coreIsPlane): their moments about `plane`, the halves split across
+/// either principal axis of their extent.
 template <class MeshType>
 bool patchIsPlane(const MeshType &m, const std::vector<std::uint32_t> &members, const Plane &plane,
                   double spacing, const PlanarRegionSettings &s) {
-  double areaSum = 0, distance2 = 0, xx = 0, xy = 0, yy = 0;
+  CoreMoments c;
   const std::array<Vec3, 2> basis = inPlaneBasis(plane.normal);
   for (const std::uint32_t g : members) {
     const Vec3 d = faceCentre(m, g) - plane.point;
     const double area = faceAreaNormal(m, g).Norm();
     const double h = d * plane.normal, u = d * basis[0], w = d * basis[1];
-    areaSum += area;
-    distance2 += h * h * area;
-    xx += u * u * area, xy += u * w * area, yy += w * w * area;
+    c.area += area;
+    c.distance2 += h * h * area;
+    c.xx += u * u * area, c.xy += u * w * area, c.yy += w * w * area;
   }
-  const std::array<Vec3, 2> axes = principalAxes(basis, xx, xy, yy);
-  std::array<Vec3, 4> halves{Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(0, 0, 0)};
+  const std::array<Vec3, 2> axes = principalAxes(basis, c.xx, c.xy, c.yy);
   for (const std::uint32_t g : members)
     for (int k = 0; k < 2; ++k)
-      halves[2 * k + ((faceCentre(m, g) - plane.point) * axes[k] > 0)] += faceAreaNormal(m, g);
-  const double rms = std::sqrt(distance2 / areaSum);
-  const double bend =
-      std::max(angleBetween(halves[0], halves[1]), angleBetween(halves[2], halves[3]));
-  return rms <= s.maxRmsSpacings * spacing && bend <= s.maxBendRad;
+      c.halfNormals[2 * k + ((faceCentre(m, g) - plane.point) * axes[k] > 0)] +=
+          faceAreaNormal(m, g);
+  return coreIsPlane(c, spacing, s);
 }
 
 }  // namespace detail
@@ -131,7 +105,8 @@ bool patchIsPlane(const MeshType &m, const std::vector<std::uint32_t> &members, 
 /// (they seed no other). Then a patch with no other meeting it at an edge's
 /// angle nearby is dropped, until none is. `vf`: the faces of each vertex;
 /// `spacing`: the sample spacing. Deterministic: faces in order of flatness,
-/// ties in face order.
+/// ties in face order. \pre the face-face adjacency of `m` is up to date
+/// (sharpen() keeps it so).
 template <class MeshType>
 PlanePatches growPlanePatches(const MeshType &m, const VertexFaceTable &vf, double spacing,
                               const PlanePatchSettings &s) {
@@ -148,12 +123,19 @@ PlanePatches growPlanePatches(const MeshType &m, const VertexFaceTable &vf, doub
     unitNormal[fi] = vcg::Point3f::Construct(n / n.Norm());
   }
   const auto normal = [&](std::size_t fi) { return Vec3::Construct(unitNormal[fi]); };
-  const auto across = detail::faceNeighbours(m, vf);
+  // The faces across face fi's three edges (-1: a border).
+  const auto across = [&](std::size_t fi) {
+    std::array<std::int64_t, 3> faces{-1, -1, -1};
+    for (int k = 0; k < 3; ++k)
+      if (const auto *g = m.face[fi].cFFp(k); g != &m.face[fi])
+        faces[k] = std::int64_t(vcg::tri::Index(m, g));
+    return faces;
+  };
   std::vector<float> turn(nf, float(M_PI));
   for (std::size_t fi = 0; fi < nf; ++fi) {
     if (!(area[fi] > 0)) continue;
     double largest = 0;
-    for (const std::int32_t g : across[fi])
+    for (const std::int64_t g : across(fi))
       if (g >= 0) largest = std::max(largest, angleBetween(normal(fi), normal(g)));
     turn[fi] = float(largest);
   }
@@ -192,7 +174,7 @@ PlanePatches growPlanePatches(const MeshType &m, const VertexFaceTable &vf, doub
     while (!queue.empty()) {
       const std::uint32_t fi = queue.front();
       queue.pop_front();
-      for (const std::int32_t g : across[fi]) {
+      for (const std::int64_t g : across(fi)) {
         if (g < 0 || patch[g] != kZone || seen[g] == walk || !(area[g] > 0)) continue;
         seen[g] = walk;
         if (!joins(std::uint32_t(g))) continue;
@@ -233,7 +215,7 @@ PlanePatches growPlanePatches(const MeshType &m, const VertexFaceTable &vf, doub
       for (int ring = 0; ring < s.pairRings && !partnered[id] && !front.empty(); ++ring) {
         next.clear();
         for (const std::uint32_t f : front)
-          for (const std::int32_t g : across[f]) {
+          for (const std::int64_t g : across(f)) {
             if (g < 0 || seen[g] == walk) continue;
             seen[g] = walk;
             next.push_back(std::uint32_t(g));
