@@ -430,3 +430,38 @@ TEST(ProjectOntoPlane, TheFootOfThePerpendicular) {
   EXPECT_NEAR(planeOffset(tilted, foot), 0, 1e-12);
   EXPECT_LT(((p - foot) ^ tilted.normal).Norm(), 1e-12);  // along the normal
 }
+
+TEST(FitPlaneLeastSquares, RecoversATiltedPlaneThroughTheWeightedCentroid) {
+  const Plane tilted{Vec3(1, 2, 3), unit(Vec3(1, -2, 2))};
+  const Vec3 u = unit(tilted.normal ^ Vec3(0, 0, 1)), w = tilted.normal ^ u;
+  std::vector<Vec3> points;
+  std::vector<double> weights;
+  Vec3 centre(0, 0, 0);
+  double total = 0;
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 5; ++j) {
+      points.push_back(tilted.point + u * (0.3 * i) + w * (0.7 * j - 0.2 * i));
+      weights.push_back(1 + (i * 5 + j) % 3);
+      centre += points.back() * weights.back(), total += weights.back();
+    }
+  const Plane fitted = es::fitPlaneLeastSquares(points, weights, -tilted.normal);
+  EXPECT_NEAR((fitted.normal + tilted.normal).Norm(), 0, 1e-9);  // turned towards -normal
+  EXPECT_NEAR((fitted.point - centre / total).Norm(), 0, 1e-12);
+  const std::vector<double> none(points.size(), 0.0);
+  EXPECT_EQ(es::fitPlaneLeastSquares(points, none, tilted.normal).normal.SquaredNorm(), 0);
+}
+
+// Points on z = 0 and a strip along one rim lifted off it, as a fused scan
+// bulges beside an edge: the plain fit tilts towards the strip, the trimmed
+// one drops it and lies on the plane.
+TEST(FitPlaneTrimmed, DropsTheBulgeAlongARim) {
+  std::vector<Vec3> points;
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 0; j <= 20; ++j) points.push_back(Vec3(0.05 * i, 0.05 * j, i >= 19 ? 0.04 : 0));
+  const std::vector<double> weights(points.size(), 1.0);
+  const Plane plain = es::fitPlaneLeastSquares(points, weights, Vec3(0, 0, 1));
+  const Plane trimmed = es::fitPlaneTrimmed(points, weights, Vec3(0, 0, 1), 1.5);
+  EXPECT_GT(es::angleBetween(plain.normal, Vec3(0, 0, 1)), 1 * kDeg);
+  EXPECT_LT(es::angleBetween(trimmed.normal, Vec3(0, 0, 1)), 1e-9);
+  EXPECT_NEAR(trimmed.point[2], 0, 1e-12);
+}

@@ -22,7 +22,9 @@ Asserted:
   feature zones beside them were flattened too (the same day: x1.246 and x1.330), and when
   bulges beyond a convex edge or corner came to go behind its planes (2026-11-28: x1.414 and
   x1.419), and when planes grown face by face were flattened too (the same day: x1.629 and
-  x1.595; its other figures, raised by earlier rules, were measured again then).
+  x1.595; its other figures, raised by earlier rules, were measured again then), and when the
+  grown planes came to be fitted by least squares (the same day: max x1.428 and x1.139, RMS
+  x1.687 and x1.674; the max at 0.2 voxel fell from x1.147).
 """
 import checks  # first: puts bench/quality on sys.path
 import families
@@ -40,10 +42,10 @@ MEASURED = {
     ("poisson", "depth 7"): {"auto": (1.277, 1.775, 0), "paper": (1.014, 1.064, 0),
         "extended": (1.196, 1.380, 0),
         "unsharp-mask": (1.117, 1.171, 0)},
-    ("scan", "noise 0"): {"auto": (1.310, 1.629, 0), "paper": (1.000, 0.992, 2),
+    ("scan", "noise 0"): {"auto": (1.428, 1.687, 0), "paper": (1.000, 0.992, 2),
         "extended": (0.881, 0.946, 3),
         "unsharp-mask": (0.890, 0.880, 3)},
-    ("scan", "noise 0.2 voxel"): {"auto": (1.147, 1.595, 0), "paper": (1.002, 0.989, 2),
+    ("scan", "noise 0.2 voxel"): {"auto": (1.139, 1.674, 0), "paper": (1.002, 0.989, 2),
         "extended": (0.965, 0.958, 3),
         "unsharp-mask": (0.891, 0.879, 3)},
 }

@@ -20,7 +20,8 @@ the zones' (the rule's first version), cross_prism x1.00 / x1.25; without the fl
 (`--keep-rough-planes`) x1.00 / x1.00 for both. The segmentation merges lblock_tilted's faces
 across its rounded edges (4 of 63 regions are planes); planes grown face by face on the
 flattened scan (plane_patches.h: growPlanePatches) give it x1.51 / x1.60 (x1.00 / x1.18
-without them), cross_prism x1.00 / x1.75.
+without them), cross_prism x1.00 / x1.75; fitted by least squares, x1.51 / x1.61 and x1.00 /
+x1.75.
 """
 import checks  # first: puts bench/quality on sys.path
 

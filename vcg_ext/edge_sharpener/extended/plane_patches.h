@@ -33,6 +33,9 @@ struct PlanePatchSettings {
   /// A patch smaller than this (in square sample spacings) tells nothing:
   /// the bulge beside an edge is itself nearly flat for a few samples.
   double minAreaSpacings2 = 60.0;
+  /// A patch's plane is fitted again without its faces farther from it than
+  /// this multiple of their RMS distance (fitPlaneTrimmed).
+  double trimRmsFactor = 1.5;
   /// A kept patch is a plane by the regions' tests (RMS distance, bend).
   PlanarRegionSettings planarity;
   /// A patch stays only when another within `pairRings` face rings of it
@@ -71,6 +74,23 @@ Vec3 faceAreaNormal(const MeshType &m, std::size_t fi) {
   return ((positionOf(f.cV(1)) - p0) ^ (positionOf(f.cV(2)) - p0)) / 2.0;
 }
 
+/// The plane of the faces `members` of `m`: least squares on their centroids,
+/// weighted by `area`, trimmed (fitPlaneTrimmed), its normal on the side of
+/// `towards`.
+template <class MeshType>
+Plane fitPatchPlane(const MeshType &m, const std::vector<std::uint32_t> &members,
+                    const std::vector<float> &area, const Vec3 &towards, double trimRmsFactor) {
+  std::vector<Vec3> centres;
+  std::vector<double> weights;
+  centres.reserve(members.size());
+  weights.reserve(members.size());
+  for (const std::uint32_t g : members) {
+    centres.push_back(faceCentre(m, g));
+    weights.push_back(area[g]);
+  }
+  return fitPlaneTrimmed(centres, weights, towards, trimRmsFactor);
+}
+
 /// Whether the faces `members` of `m` make a plane by the regions' tests
 /// (coreIsPlane): their moments about `plane`, the halves split across
 /// either principal axis of their extent.
@@ -101,12 +121,13 @@ bool patchIsPlane(const MeshType &m, const std::vector<std::uint32_t> &members, 
 /// largest turn to its neighbours least), a patch takes the neighbours that
 /// turn little from its plane and whose vertices lie near it
 /// (PlanePatchSettings), its plane refitted as its area doubles (area-weighted
-/// centroid and normal). A patch too small or no plane gives its faces back
-/// (they seed no other). Then a patch with no other meeting it at an edge's
-/// angle nearby is dropped, until none is. `vf`: the faces of each vertex;
-/// `spacing`: the sample spacing. Deterministic: faces in order of flatness,
-/// ties in face order. \pre the face-face adjacency of `m` is up to date
-/// (sharpen() keeps it so).
+/// centroid and normal) and, once grown, by least squares (fitPatchPlane: the
+/// normals of a scan's faces tilt with its noise). A patch too small or no
+/// plane gives its faces back (they seed no other). Then a patch with no
+/// other meeting it at an edge's angle nearby is dropped, until none is.
+/// `vf`: the faces of each vertex; `spacing`: the sample spacing.
+/// Deterministic: faces in order of flatness, ties in face order. \pre the
+/// face-face adjacency of `m` is up to date (sharpen() keeps it so).
 template <class MeshType>
 PlanePatches growPlanePatches(const MeshType &m, const VertexFaceTable &vf, double spacing,
                               const PlanePatchSettings &s) {
@@ -190,7 +211,7 @@ PlanePatches growPlanePatches(const MeshType &m, const VertexFaceTable &vf, doub
         }
       }
     }
-    plane = Plane{centreSum / areaSum, normalSum / normalSum.Norm()};
+    plane = detail::fitPatchPlane(m, faces, area, normalSum, s.trimRmsFactor);
     if (areaSum < s.minAreaSpacings2 * spacing * spacing ||
         !detail::patchIsPlane(m, faces, plane, spacing, s.planarity)) {
       for (const std::uint32_t g : faces) patch[g] = kZone, maySeed[g] = 0;

@@ -8,6 +8,7 @@
 
 #include <vcg/space/point3.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -291,6 +292,53 @@ inline std::optional<Vec3> nearestPointBehindPlanes(const Vec3 &p, const std::ve
       for (std::size_t k = j + 1; k < n; ++k)
         consider(intersectThreePlanes(planes[i], planes[j], planes[k], parallelAngleRad));
   return nearest;
+}
+
+/// The plane through `points` by weighted least squares: through their
+/// weighted centroid, its normal the direction in which they spread least,
+/// turned to the side of `towards`. A zero normal where the weights sum to
+/// zero. (vcglib's WeightedFitPlaneToPointSet squares the weights in its
+/// covariance.) Pure.
+inline Plane fitPlaneLeastSquares(const std::vector<Vec3> &points,
+                                  const std::vector<double> &weights, const Vec3 &towards) {
+  Vec3 centre(0, 0, 0);
+  double total = 0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    centre += points[i] * weights[i], total += weights[i];
+  if (!(total > 0)) return Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)};
+  centre /= total;
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3 d = points[i] - centre;
+    const Eigen::Vector3d e(d[0], d[1], d[2]);
+    spread += weights[i] * e * e.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(spread);
+  const Eigen::Vector3d least = solver.eigenvectors().col(0);  // eigenvalues ascend
+  Vec3 normal(least[0], least[1], least[2]);
+  normal.Normalize();
+  return Plane{centre, normal * towards < 0 ? -normal : normal};
+}
+
+/// fitPlaneLeastSquares, then again without the points farther from that
+/// plane than `trimFactor` times their weighted RMS distance to it: a few
+/// points off a plane (the bulge a fused scan leaves along a face's rim)
+/// tilt a least-squares fit. Pure.
+inline Plane fitPlaneTrimmed(const std::vector<Vec3> &points, const std::vector<double> &weights,
+                             const Vec3 &towards, double trimFactor) {
+  const Plane first = fitPlaneLeastSquares(points, weights, towards);
+  if (first.normal.SquaredNorm() == 0) return first;
+  double squares = 0, total = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double h = first.normal * (points[i] - first.point);
+    squares += weights[i] * h * h, total += weights[i];
+  }
+  const double bound = trimFactor * std::sqrt(squares / total);
+  std::vector<double> kept(weights);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (std::abs(first.normal * (points[i] - first.point)) > bound) kept[i] = 0;
+  const Plane second = fitPlaneLeastSquares(points, kept, towards);
+  return second.normal.SquaredNorm() > 0 ? second : first;
 }
 
 /// Interior angle at vertex `a` of triangle abc (the paper's weight).
