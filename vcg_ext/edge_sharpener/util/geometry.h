@@ -298,7 +298,8 @@ inline std::optional<Vec3> nearestPointBehindPlanes(const Vec3 &p, const std::ve
 /// weighted centroid, its normal the direction in which they spread least,
 /// turned to the side of `towards`. A zero normal where the weights sum to
 /// zero. (vcglib's WeightedFitPlaneToPointSet squares the weights in its
-/// covariance.) Pure.
+/// covariance.) \pre weights.size() == points.size(), no weight negative.
+/// Pure.
 inline Plane fitPlaneLeastSquares(const std::vector<Vec3> &points,
                                   const std::vector<double> &weights, const Vec3 &towards) {
   Vec3 centre(0, 0, 0);
@@ -323,7 +324,8 @@ inline Plane fitPlaneLeastSquares(const std::vector<Vec3> &points,
 /// fitPlaneLeastSquares, then again without the points farther from that
 /// plane than `trimFactor` times their weighted RMS distance to it: a few
 /// points off a plane (the bulge a fused scan leaves along a face's rim)
-/// tilt a least-squares fit. Pure.
+/// tilt a least-squares fit. At most 1 / trimFactor^2 of the weight is
+/// dropped (Chebyshev), so the second fit keeps most points. Pure.
 inline Plane fitPlaneTrimmed(const std::vector<Vec3> &points, const std::vector<double> &weights,
                              const Vec3 &towards, double trimFactor) {
   const Plane first = fitPlaneLeastSquares(points, weights, towards);
