@@ -211,9 +211,10 @@ PlanePatches growPlanePatches(const MeshType &m, const VertexFaceTable &vf, doub
         }
       }
     }
-    plane = detail::fitPatchPlane(m, faces, area, normalSum, s.trimRmsFactor);
-    if (areaSum < s.minAreaSpacings2 * spacing * spacing ||
-        !detail::patchIsPlane(m, faces, plane, spacing, s.planarity)) {
+    // A patch too small is given back without being fitted.
+    const bool large = areaSum >= s.minAreaSpacings2 * spacing * spacing;
+    if (large) plane = detail::fitPatchPlane(m, faces, area, normalSum, s.trimRmsFactor);
+    if (!large || !detail::patchIsPlane(m, faces, plane, spacing, s.planarity)) {
       for (const std::uint32_t g : faces) patch[g] = kZone, maySeed[g] = 0;
       plane = Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)};
       faces.clear();
