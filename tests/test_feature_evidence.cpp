@@ -402,6 +402,41 @@ TEST(FeatureEvidence, MovesThatOnlySlideLeaveTheWholeMesh) {
     EXPECT_FALSE(w);
 }
 
+// A remesher casting its vertices onto the input puts them on the convex
+// edges it meets and leaves others chamfered: on a mesh sampled exactly,
+// a mostly sliding median leaves only the sliding features (and their
+// corner), and the chamfered strip lifting to its edge is judged alone.
+TEST(FeatureEvidence, OnAMeshSampledExactlyOnlyTheFeaturesThatSlideAreAlreadySharp) {
+  TwoStripsAndACorner t;
+  std::vector<es::Feature> features;
+  const auto featureOf = t.groupAllMoved(features);
+  const std::uint32_t a = featureOf[0], b = featureOf[4], corner = featureOf[7];
+  features[a].medianLift = 0.0;  // strip A slides along the input
+  features[b].medianLift = 0.8;  // strip B lifts to its edge
+  es::SharpenOptions opt;        // median lift at least 0.07
+  auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
+                               /*exactSampling=*/true);
+  EXPECT_TRUE(weak[a]);
+  EXPECT_TRUE(weak[corner]);
+  EXPECT_FALSE(weak[b]);
+  EXPECT_FALSE(es::meshEvidenceIsWeak(0.0, 0.03, kRoughSurface, opt, /*exactSampling=*/true));
+  EXPECT_TRUE(es::meshEvidenceIsWeak(0.0, 0.03, kRoughSurface, opt, /*exactSampling=*/false));
+  // Where the median lifts, a feature sliding alone is judged as before.
+  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.5, kRoughSurface, opt,
+                          /*exactSampling=*/true);
+  EXPECT_FALSE(weak[a] || weak[b] || weak[corner]);
+  // Not sampled exactly: the whole mesh is already sharp.
+  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt);
+  for (char w : weak) EXPECT_TRUE(w);
+}
+
+TEST(FeatureEvidence, EachFeatureTakesTheMedianLiftOfItsOwnMoves) {
+  std::vector<es::Feature> features(2);
+  es::measureFeatureLifts({0.9, -1, 0.7, 0.8, 0.0, 0.1, 0.02}, {0, 0, 0, 0, 1, 1, 1}, features);
+  EXPECT_DOUBLE_EQ(features[0].medianLift, 0.8);  // the unmoved vertex does not count
+  EXPECT_DOUBLE_EQ(features[1].medianLift, 0.02);
+}
+
 TEST(FeatureEvidence, MedianLiftCountsOnlyTheMoves) {
   EXPECT_DOUBLE_EQ(es::medianLift({-1, 0.9, -1, 0.7, 0.8}), 0.8);
   EXPECT_DOUBLE_EQ(es::medianLift({-1, -1}), 1.0);  // nothing moved: nothing against it

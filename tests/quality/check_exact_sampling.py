@@ -14,20 +14,8 @@ this test was written).
 """
 import checks  # first: puts bench/quality on sys.path
 
-MULTIPLIER = 2.0
 MIN_RMS_FACTORS = {"1%": 1.8, "0.5%": 2.5}
-EXPECTED = {("vdbproj", "1%"), ("vdbproj", "0.5%")}
-
-
-def main():
-    failures = []
-    outcomes = checks.default_method_outcomes(checks.load_results()["cases"], failures,
-                                              MULTIPLIER, width=16)
-    for c, before, after in outcomes:
-        checks.require_factor(c, before, after, "rms", MIN_RMS_FACTORS[c["resolution"]], failures)
-    checks.require_measured(outcomes, ("input", "resolution"), EXPECTED, failures)
-    checks.finish(failures, "exact sampling: designed bevels kept, neither input made worse")
-
 
 if __name__ == "__main__":
-    main()
+    checks.check_rms_factors_by_resolution(
+        "vdbproj", MIN_RMS_FACTORS, "exact sampling: designed bevels kept, neither input made worse")

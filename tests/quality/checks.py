@@ -87,6 +87,19 @@ def check_min_factors(min_factors, resolution, passed, multiplier=2.0, width=24)
     finish(failures, passed)
 
 
+def check_rms_factors_by_resolution(input_key, min_rms_factors, passed, multiplier=2.0):
+    """The whole check of a results JSON with one model's inputs `input_key` at the resolutions
+    of `min_rms_factors`: each made, sharpened by the default method and measured, none worse,
+    and its RMS reduction factor at least min_rms_factors[resolution]. Exits like finish()."""
+    failures = []
+    outcomes = default_method_outcomes(load_results()["cases"], failures, multiplier, width=16)
+    for c, before, after in outcomes:
+        require_factor(c, before, after, "rms", min_rms_factors[c["resolution"]], failures)
+    require_measured(outcomes, ("input", "resolution"),
+                     {(input_key, resolution) for resolution in min_rms_factors}, failures)
+    finish(failures, passed)
+
+
 def require_measured(outcomes, fields, expected, failures):
     """Appends a failure unless the cases of `outcomes` (default_method_outcomes), each keyed by
     the tuple of its `fields`, are exactly the set `expected`: no input may go missing."""

@@ -300,7 +300,9 @@ inline const std::vector<OptionSpec> &optionTable() {
        "Auto method: nothing is sharpened when the moves mostly slide along the input's surface "
        "instead of lifting it to sharp edges: the median distance of the new vertices' targets "
        "from the input faces around them is below this fraction of the moves' length (a model "
-       "already sharp, whose curved faces sliding would only bend; 0: off).",
+       "already sharp, whose curved faces sliding would only bend; 0: off). On a mesh sampled "
+       "exactly on its surface, only the features whose own moves slide are left: its sampler "
+       "may leave some edges sharp and others chamfered.",
        T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
        ES_REAL(minMedianLift)},
       {"max_feature_fallback_fraction", "--feature-fallback", "", "Feature fallback fraction",

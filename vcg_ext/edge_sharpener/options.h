@@ -240,7 +240,8 @@ struct SharpenOptions {
   /// Nothing is sharpened either when the moves mostly slide along the
   /// input's surface: the median distance of their targets from the input
   /// faces around them is below this fraction of their length (a model
-  /// already sharp).
+  /// already sharp). On a mesh sampled exactly, only the features whose own
+  /// moves slide so (weakFeatures).
   double minMedianLift = 0.07;
 
   /// The 2003 method exactly as published, every other option at its default.

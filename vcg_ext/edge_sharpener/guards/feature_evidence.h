@@ -73,6 +73,9 @@ struct Feature {
   /// Of its moved vertices, those whose target lies nearer another sheet of
   /// the input's surface than the faces around its sources (crossesSheet).
   std::size_t crossed = 0;
+  /// The median lift of its moves (moveLift; 1 when none moved): near 0
+  /// where its vertices only slide along the input, already sharp there.
+  double medianLift = 1;
 };
 
 /// The angle (radians, in [0, pi/2]) at which two planes of unit normals
@@ -366,6 +369,16 @@ inline double medianLift(const std::vector<double> &lifts) {
   return moved.empty() ? 1.0 : detail::medianOf(moved);
 }
 
+/// Each feature's median lift (Feature::medianLift) from the lifts of the
+/// moves (liftsOfMoves, split plan order; `featureOf` the same order).
+inline void measureFeatureLifts(const std::vector<double> &lifts,
+                                const std::vector<std::uint32_t> &featureOf,
+                                std::vector<Feature> &features) {
+  std::vector<std::vector<double>> of(features.size());
+  for (std::size_t k = 0; k < lifts.size(); ++k) of[featureOf[k]].push_back(lifts[k]);
+  for (std::size_t c = 0; c < features.size(); ++c) features[c].medianLift = medianLift(of[c]);
+}
+
 /// Whether the mesh is sampled exactly on its surface: its median edge
 /// feature that moved, weighted by its new vertices, has nine in ten of its
 /// source vertices within opt.exactSamplingSpacings of their planes (a
@@ -476,29 +489,42 @@ inline double refusedBound(const SurfaceMeasures &surface, const SharpenOptions 
                       : opt.maxRefusedFraction;
 }
 
+/// Whether the moves mostly slide along the input instead of lifting it
+/// (their median `lift`, medianLift): a model already sharp. Pure.
+inline bool mostlyAlreadySharp(double lift, const SharpenOptions &opt) {
+  return lift < opt.minMedianLift;
+}
+
 /// Whether the mesh as a whole shows too little evidence to sharpen any of
 /// it: the tests refused too many of the moves (refusedFraction, against
-/// refusedBound), or the moves mostly slide along the input instead of
-/// lifting it (medianLift): a model already sharp.
+/// refusedBound), or the model is already sharp (mostlyAlreadySharp). A mesh
+/// sampled exactly on its surface (sampledExactly) may be sharp in part: its
+/// sampler puts vertices on the edges it meets (a remesher casting them onto
+/// the input does at convex edges) and leaves the others chamfered, so there
+/// each feature is judged by its own lift (weakFeatures). Pure.
 inline bool meshEvidenceIsWeak(double refused, double lift, const SurfaceMeasures &surface,
-                               const SharpenOptions &opt) {
-  return refused > refusedBound(surface, opt) || lift < opt.minMedianLift;
+                               const SharpenOptions &opt, bool exactSampling = false) {
+  return refused > refusedBound(surface, opt) || (mostlyAlreadySharp(lift, opt) && !exactSampling);
 }
 
 /// Per feature, whether its moves go back: every feature when the mesh as a
 /// whole shows too little evidence (meshEvidenceIsWeak with the moves'
 /// median `lift`), else those whose evidence is weak (featureEvidenceIsWeak,
-/// on a mesh sampled exactly or not) and the corners one of whose edges' is
-/// (a corner is where its edges meet).
+/// on a mesh sampled exactly or not), on a mesh sampled exactly and mostly
+/// sharp already those whose own moves slide along it (Feature::medianLift),
+/// and the corners one of whose edges' is (a corner is where its edges
+/// meet).
 inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<Feature> &features,
                                       const std::vector<std::uint32_t> &featureOf, double lift,
                                       const SurfaceMeasures &surface, const SharpenOptions &opt,
                                       bool exactSampling = false) {
-  if (meshEvidenceIsWeak(refusedFraction(features), lift, surface, opt))
+  if (meshEvidenceIsWeak(refusedFraction(features), lift, surface, opt, exactSampling))
     return std::vector<char>(features.size(), 1);
+  const bool partlySharp = mostlyAlreadySharp(lift, opt);
   std::vector<char> weak(features.size(), 0);
   for (std::size_t c = 0; c < features.size(); ++c)
-    weak[c] = featureEvidenceIsWeak(features[c], opt, exactSampling);
+    weak[c] = featureEvidenceIsWeak(features[c], opt, exactSampling) ||
+              (partlySharp && mostlyAlreadySharp(features[c].medianLift, opt));
   // An edge feature's weakness reaches the corner features around its sources.
   std::vector<char> weakSource(plan.originalVertexCount, 0);
   for (std::size_t k = 0; k < plan.inserted.size(); ++k)
@@ -581,12 +607,13 @@ class EvidenceGuard {
     stats.refusedBound = refusedBound(surface_, opt_);
     out.lifts = liftsOfMoves(m_, moves_, input_);
     stats.medianLift = medianLift(out.lifts);
+    measureFeatureLifts(out.lifts, featureOf_, features_);
     stats.noiseSpacings = surface_.noiseSpacings;
     stats.planarFraction = surface_.planarFraction;
     exactSampling_ = sampledExactly(features_, opt_);
     stats.exactSampling = exactSampling_;
     stats.wholeMeshLeft =
-        meshEvidenceIsWeak(stats.refusedFraction, stats.medianLift, surface_, opt_);
+        meshEvidenceIsWeak(stats.refusedFraction, stats.medianLift, surface_, opt_, exactSampling_);
     if (!stats.wholeMeshLeft)
       countSheetCrossings(m_, moves_, support_, out.lifts, featureOf_, longestInputEdge_,
                           features_);
