@@ -404,8 +404,9 @@ TEST(FeatureEvidence, MovesThatOnlySlideLeaveTheWholeMesh) {
 
 // A remesher casting its vertices onto the input puts them on the convex
 // edges it meets and leaves others chamfered: on a mesh sampled exactly,
-// a mostly sliding median leaves only the sliding features (and their
-// corner), and the chamfered strip lifting to its edge is judged alone.
+// a mostly sliding median leaves only the sliding features, and the
+// chamfered strip lifting to its edge is judged alone. An edge already
+// sharp is no evidence against the corner it runs into.
 TEST(FeatureEvidence, OnAMeshSampledExactlyOnlyTheFeaturesThatSlideAreAlreadySharp) {
   TwoStripsAndACorner t;
   std::vector<es::Feature> features;
@@ -417,8 +418,21 @@ TEST(FeatureEvidence, OnAMeshSampledExactlyOnlyTheFeaturesThatSlideAreAlreadySha
   auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
                                /*exactSampling=*/true);
   EXPECT_TRUE(weak[a]);
-  EXPECT_TRUE(weak[corner]);
   EXPECT_FALSE(weak[b]);
+  EXPECT_FALSE(weak[corner]);
+  features[corner].medianLift = 0.0;  // the corner slides too
+  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
+                          /*exactSampling=*/true);
+  EXPECT_TRUE(weak[corner]);
+  features[corner].medianLift = 1.0;
+  features[b] = feature(3, 3, /*offPlane=*/1.0);  // strip B weak by its evidence: its corner too
+  features[b].medianLift = 0.8;
+  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
+                          /*exactSampling=*/true);
+  EXPECT_TRUE(weak[b]);
+  EXPECT_TRUE(weak[corner]);
+  features[b] = feature(3, 3);
+  features[b].medianLift = 0.8;
   EXPECT_FALSE(es::meshEvidenceIsWeak(0.0, 0.03, kRoughSurface, opt, /*exactSampling=*/true));
   EXPECT_TRUE(es::meshEvidenceIsWeak(0.0, 0.03, kRoughSurface, opt, /*exactSampling=*/false));
   // Where the median lifts, a feature sliding alone is judged as before.

@@ -113,8 +113,9 @@ int main(int argc, char **argv) {
     // The same verdicts without the off-plane test, to study a replacement for it.
     es::SharpenOptions withoutOffPlane = opt;
     withoutOffPlane.maxFeatureOffPlaneSpacings = 1e30;
-    const std::vector<char> weakOtherwise = es::weakFeatures(
-        plan, features, featureOf, judged.stats.medianLift, measures, withoutOffPlane);
+    const std::vector<char> weakOtherwise =
+        es::weakFeatures(plan, features, featureOf, judged.stats.medianLift, measures,
+                         withoutOffPlane, judged.stats.exactSampling);
     // Each feature's source vertices' distances to their own plane, as the guard measured them.
     const std::vector<std::vector<double>> offPlane =
         es::sourceOffPlanes(m, moves, zones.support, featureOf, features.size());

@@ -7,14 +7,15 @@ surface: at cross_prism's convex edges the cast vertices land on the edges, and 
 only slide along the input (lift near 0), while its concave edges stay chamfered. The median
 move slid, so the default method took the whole mesh for a model already sharp and left it as
 it was. On a mesh sampled exactly (feature_evidence.h: sampledExactly) only the features whose
-own moves slide are already sharp now (weakFeatures). Asserted: both inputs made, sharpened
-and measured, neither made worse (families.is_worse: max up > 2% or RMS up > 1%), and the RMS
-error down by at least MIN_RMS_FACTORS (measured x1.31 and x1.73 when this test was written;
-x1.00 before).
+own moves slide are already sharp now, and they do not make the corners they run into weak
+(weakFeatures). Asserted: both inputs made, sharpened and measured, neither made worse
+(families.is_worse: max up > 2% or RMS up > 1%), and the RMS error down by at least
+MIN_RMS_FACTORS (measured x1.33 and x1.92; x1.00 before the rule, x1.31 and x1.73 with the
+corners still taking the sharp edges' verdict).
 """
 import checks  # first: puts bench/quality on sys.path
 
-MIN_RMS_FACTORS = {"1%": 1.2, "0.5%": 1.5}
+MIN_RMS_FACTORS = {"1%": 1.2, "0.5%": 1.6}
 
 if __name__ == "__main__":
     checks.check_rms_factors_by_resolution(

@@ -510,10 +510,10 @@ inline bool meshEvidenceIsWeak(double refused, double lift, const SurfaceMeasure
 /// Per feature, whether its moves go back: every feature when the mesh as a
 /// whole shows too little evidence (meshEvidenceIsWeak with the moves'
 /// median `lift`), else those whose evidence is weak (featureEvidenceIsWeak,
-/// on a mesh sampled exactly or not), on a mesh sampled exactly and mostly
-/// sharp already those whose own moves slide along it (Feature::medianLift),
-/// and the corners one of whose edges' is (a corner is where its edges
-/// meet).
+/// on a mesh sampled exactly or not) and the corners one of whose edges' is
+/// (a corner is where its edges meet), and, on a mesh sampled exactly and
+/// mostly sharp already, those whose own moves slide along it
+/// (Feature::medianLift).
 inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<Feature> &features,
                                       const std::vector<std::uint32_t> &featureOf, double lift,
                                       const SurfaceMeasures &surface, const SharpenOptions &opt,
@@ -521,11 +521,13 @@ inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<F
   if (meshEvidenceIsWeak(refusedFraction(features), lift, surface, opt, exactSampling))
     return std::vector<char>(features.size(), 1);
   const bool partlySharp = mostlyAlreadySharp(lift, opt);
-  std::vector<char> weak(features.size(), 0);
-  for (std::size_t c = 0; c < features.size(); ++c)
-    weak[c] = featureEvidenceIsWeak(features[c], opt, exactSampling) ||
-              (partlySharp && mostlyAlreadySharp(features[c].medianLift, opt));
-  // An edge feature's weakness reaches the corner features around its sources.
+  std::vector<char> weak(features.size(), 0), sharpAlready(features.size(), 0);
+  for (std::size_t c = 0; c < features.size(); ++c) {
+    weak[c] = featureEvidenceIsWeak(features[c], opt, exactSampling);
+    sharpAlready[c] = partlySharp && mostlyAlreadySharp(features[c].medianLift, opt);
+  }
+  // An edge feature's weakness reaches the corner features around its sources;
+  // an edge already sharp is no evidence against the corner it runs into.
   std::vector<char> weakSource(plan.originalVertexCount, 0);
   for (std::size_t k = 0; k < plan.inserted.size(); ++k)
     if (!features[featureOf[k]].corner && weak[featureOf[k]])
@@ -535,6 +537,7 @@ inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<F
     if (features[featureOf[k]].corner)
       for (int i = 0; i < plan.inserted[k].originalCount; ++i)
         if (weakSource[plan.inserted[k].original[i]]) weak[featureOf[k]] = 1;
+  for (std::size_t c = 0; c < features.size(); ++c) weak[c] = weak[c] || sharpAlready[c];
   return weak;
 }
 
