@@ -98,6 +98,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
   if (r.evidenceGuard)
     j["evidence"] = {{"features", r.evidence.features},
                      {"weak_features", r.evidence.weakFeatures},
+                     {"already_sharp_features", r.evidence.alreadySharpFeatures},
                      {"reverted", r.evidence.reverted},
                      {"zone_reverted", r.evidence.zoneReverted},
                      {"refused_fraction", r.evidence.refusedFraction},

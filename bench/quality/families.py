@@ -298,6 +298,8 @@ def _what_default_did(case, run):
     text = "sharpened"
     if ev:
         text += f", {ev['weak_features']} of {ev['features']} features left as they were"
+        if ev.get("already_sharp_features"):
+            text += f" ({ev['already_sharp_features']} already sharp)"
     if _max_unchanged(case, run):
         text += "; max unchanged"
     return text

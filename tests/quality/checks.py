@@ -87,14 +87,19 @@ def check_min_factors(min_factors, resolution, passed, multiplier=2.0, width=24)
     finish(failures, passed)
 
 
-def check_rms_factors_by_resolution(input_key, min_rms_factors, passed, multiplier=2.0):
+def check_rms_factors_by_resolution(input_key, min_rms_factors, passed, multiplier=2.0,
+                                    each=None):
     """The whole check of a results JSON with one model's inputs `input_key` at the resolutions
     of `min_rms_factors`: each made, sharpened by the default method and measured, none worse,
-    and its RMS reduction factor at least min_rms_factors[resolution]. Exits like finish()."""
+    and its RMS reduction factor at least min_rms_factors[resolution]; `each(case, run,
+    failures)`, when given, checks each case's default run further. Exits like finish()."""
     failures = []
     outcomes = default_method_outcomes(load_results()["cases"], failures, multiplier, width=16)
     for c, before, after in outcomes:
         require_factor(c, before, after, "rms", min_rms_factors[c["resolution"]], failures)
+        if each:
+            each(c, next(r for r in c["runs"] if r["method"] == "auto"
+                          and r.get("multiplier") == multiplier), failures)
     require_measured(outcomes, ("input", "resolution"),
                      {(input_key, resolution) for resolution in min_rms_factors}, failures)
     finish(failures, passed)

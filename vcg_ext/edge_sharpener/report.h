@@ -91,8 +91,11 @@ struct IntersectionStats {
 /// Stage 6c, auto method: features sent back whole for weak evidence
 /// (feature_evidence.h).
 struct EvidenceStats {
-  std::size_t features = 0;        ///< features (inserted vertices joined through their sources)
-  std::size_t weakFeatures = 0;    ///< of those, left as they were
+  std::size_t features = 0;      ///< features (inserted vertices joined through their sources)
+  std::size_t weakFeatures = 0;  ///< of those, left as they were
+  /// ...of which already sharp: their moves slide along a mesh sampled
+  /// exactly that is sharp in part (weakFeatures in feature_evidence.h)
+  std::size_t alreadySharpFeatures = 0;
   std::size_t reverted = 0;        ///< inserted vertices sent back (counted in placement too)
   std::size_t zoneReverted = 0;    ///< projected zone vertices sent back
   double refusedFraction = 0;      ///< of the moved features' vertices, those refused
@@ -213,10 +216,12 @@ inline void formatGuards(std::ostream &s, const SharpenReport &r) {
                             ? ": too little evidence, the mesh is left as it was"
                             : ": too little evidence, no feature sharpened";
   s << "evidence: " << r.evidence.weakFeatures << " of " << r.evidence.features
-    << " features left as they were (" << r.evidence.reverted << " inserted and "
-    << r.evidence.zoneReverted << " zone vertices sent back); "
-    << int(std::lround(100 * r.evidence.refusedFraction)) << "% of the moves refused (bound "
-    << int(std::lround(100 * r.evidence.refusedBound)) << "%), "
+    << " features left as they were (";
+  if (r.evidence.alreadySharpFeatures > 0)
+    s << r.evidence.alreadySharpFeatures << " of them already sharp; ";
+  s << r.evidence.reverted << " inserted and " << r.evidence.zoneReverted
+    << " zone vertices sent back); " << int(std::lround(100 * r.evidence.refusedFraction))
+    << "% of the moves refused (bound " << int(std::lround(100 * r.evidence.refusedBound)) << "%), "
     << "median lift " << std::lround(100 * r.evidence.medianLift) / 100.0 << ", noise "
     << std::lround(1000 * r.evidence.noiseSpacings) / 1000.0 << " spacings, "
     << int(std::lround(100 * r.evidence.planarFraction)) << "% of the area on planes"

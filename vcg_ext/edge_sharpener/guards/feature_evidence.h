@@ -622,8 +622,13 @@ class EvidenceGuard {
                           features_);
     out.weak = weakFeatures(moves_.plan(), features_, featureOf_, stats.medianLift, surface_, opt_,
                             exactSampling_);
-    for (std::size_t c = 0; c < features_.size(); ++c)
-      stats.weakFeatures += out.weak[c] && features_[c].moved > 0;
+    const bool partlySharp = !stats.wholeMeshLeft && mostlyAlreadySharp(stats.medianLift, opt_);
+    for (std::size_t c = 0; c < features_.size(); ++c) {
+      if (!out.weak[c] || features_[c].moved == 0) continue;
+      ++stats.weakFeatures;
+      stats.alreadySharpFeatures +=
+          partlySharp && mostlyAlreadySharp(features_[c].medianLift, opt_);
+    }
     return out;
   }
 
