@@ -551,8 +551,9 @@ def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cach
         row["sample_spacing"] = rep["extended"]["sample_spacing"]
     if "evidence" in rep:  # why the default left what it left (families.default_misses)
         row["evidence"] = {k: rep["evidence"][k] for k in (
-            "features", "weak_features", "already_sharp_features", "refused_fraction", "refused_bound", "median_lift",
-            "noise_spacings", "planar_fraction", "whole_mesh_left", "flattened_vertices")}
+            "features", "weak_features", "already_sharp_features", "refused_fraction",
+            "refused_bound", "median_lift", "noise_spacings", "planar_fraction",
+            "whole_mesh_left", "flattened_vertices")}
     if not measure_run(tools, out, model.reference, timeout, row):
         return row
     if (method == families.DEFAULT_METHOD and mult == DEFAULT_MULTIPLIER

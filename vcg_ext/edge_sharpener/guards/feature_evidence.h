@@ -495,6 +495,14 @@ inline bool mostlyAlreadySharp(double lift, const SharpenOptions &opt) {
   return lift < opt.minMedianLift;
 }
 
+/// Whether feature `f` is left as already sharp on a mesh whose moves mostly
+/// slide (the median `lift` of all of them) but which is not left whole (a
+/// mesh sampled exactly, sharp in part: meshEvidenceIsWeak): its own moves
+/// slide too (Feature::medianLift). Pure.
+inline bool leftAsAlreadySharp(const Feature &f, double lift, const SharpenOptions &opt) {
+  return mostlyAlreadySharp(lift, opt) && mostlyAlreadySharp(f.medianLift, opt);
+}
+
 /// Whether the mesh as a whole shows too little evidence to sharpen any of
 /// it: the tests refused too many of the moves (refusedFraction, against
 /// refusedBound), or the model is already sharp (mostlyAlreadySharp). A mesh
@@ -520,12 +528,9 @@ inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<F
                                       bool exactSampling = false) {
   if (meshEvidenceIsWeak(refusedFraction(features), lift, surface, opt, exactSampling))
     return std::vector<char>(features.size(), 1);
-  const bool partlySharp = mostlyAlreadySharp(lift, opt);
-  std::vector<char> weak(features.size(), 0), sharpAlready(features.size(), 0);
-  for (std::size_t c = 0; c < features.size(); ++c) {
+  std::vector<char> weak(features.size(), 0);
+  for (std::size_t c = 0; c < features.size(); ++c)
     weak[c] = featureEvidenceIsWeak(features[c], opt, exactSampling);
-    sharpAlready[c] = partlySharp && mostlyAlreadySharp(features[c].medianLift, opt);
-  }
   // An edge feature's weakness reaches the corner features around its sources;
   // an edge already sharp is no evidence against the corner it runs into.
   std::vector<char> weakSource(plan.originalVertexCount, 0);
@@ -537,7 +542,8 @@ inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<F
     if (features[featureOf[k]].corner)
       for (int i = 0; i < plan.inserted[k].originalCount; ++i)
         if (weakSource[plan.inserted[k].original[i]]) weak[featureOf[k]] = 1;
-  for (std::size_t c = 0; c < features.size(); ++c) weak[c] = weak[c] || sharpAlready[c];
+  for (std::size_t c = 0; c < features.size(); ++c)
+    weak[c] = weak[c] || leftAsAlreadySharp(features[c], lift, opt);
   return weak;
 }
 
@@ -622,12 +628,11 @@ class EvidenceGuard {
                           features_);
     out.weak = weakFeatures(moves_.plan(), features_, featureOf_, stats.medianLift, surface_, opt_,
                             exactSampling_);
-    const bool partlySharp = !stats.wholeMeshLeft && mostlyAlreadySharp(stats.medianLift, opt_);
     for (std::size_t c = 0; c < features_.size(); ++c) {
       if (!out.weak[c] || features_[c].moved == 0) continue;
       ++stats.weakFeatures;
       stats.alreadySharpFeatures +=
-          partlySharp && mostlyAlreadySharp(features_[c].medianLift, opt_);
+          !stats.wholeMeshLeft && leftAsAlreadySharp(features_[c], stats.medianLift, opt_);
     }
     return out;
   }
