@@ -4,9 +4,12 @@
 // minRegionDepth; openRegionContacts() opens the faces where regions touch,
 // except on narrow facets long enough to be surfaces;
 // labelZoneVertices() gives each zone vertex the region whose plane it lies
-// on, among those within maxLabelHops.
+// on, among those within maxLabelHops; projectZoneVertices()'s helpers pick
+// the planes a zone vertex may go onto.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <set>
@@ -283,4 +286,48 @@ TEST(LabelZoneVertices, VerticesSharedByTwoRegionsAreCreases) {
     EXPECT_EQ(t.zones.vertexLabel[v], col < 10 ? 0 : col > 10 ? 1 : es::kCrease) << "vertex " << v;
     EXPECT_TRUE(t.zones.inRegion[v]);
   }
+}
+
+// A zone vertex inside a convex corner's cell, (0.4, 0.4, 0.4) off the faces
+// x = 0, y = 0, z = 0: projected onto z = 0 it stays as far from the other
+// two, so that plane may take it; a move that takes it farther from one of
+// its planes (onto a plane turned towards another) may not.
+TEST(ProjectZoneVertices, ANeighboursPlaneTakesAVertexOnlyNoFartherFromItsOtherPlanes) {
+  const es::Plane x{Vec3(0, 0, 0), Vec3(1, 0, 0)}, y{Vec3(0, 0, 0), Vec3(0, 1, 0)},
+      z{Vec3(0, 0, 0), Vec3(0, 0, 1)};
+  const std::array<const es::Plane *, 4> corner{&x, &y, &z, &z};
+  const Vec3 p(0.4, 0.4, 0.4);
+  EXPECT_TRUE(es::detail::noFartherFromPlanes(corner, 3, p, es::projectOntoPlane(z, p), 1e-12));
+  EXPECT_TRUE(es::detail::noFartherFromPlanes(corner, 3, p, es::projectOntoPlane(y, p), 1e-12));
+  const es::Plane tilted{Vec3(0, 0, 0), Vec3(1, 0, 1) / std::sqrt(2.0)};
+  const Vec3 onTilted = es::projectOntoPlane(tilted, Vec3(0.4, 0.4, 0.1));
+  EXPECT_FALSE(es::detail::noFartherFromPlanes(corner, 3, Vec3(0.4, 0.4, 0.1), onTilted, 1e-12))
+      << "moved along (1, 0, 1): farther from z = 0";
+  // Zero normals (no plane) are skipped.
+  const es::Plane none{Vec3(0, 0, 0), Vec3(0, 0, 0)};
+  const std::array<const es::Plane *, 4> withNone{&none, &z, &none, &none};
+  EXPECT_TRUE(es::detail::noFartherFromPlanes(withNone, 2, p, es::projectOntoPlane(z, p), 0));
+}
+
+// The planes tried for a zone vertex: its own first, then those of the
+// vertices listed nearby, closest first, up to the first padding entry;
+// nearby vertices without a plane are skipped.
+TEST(ProjectZoneVertices, OwnPlaneFirstThenTheNearbyRegionsPlanes) {
+  es::SupportPlanes support;
+  support.reset(5);
+  const auto fitWithNormal = [](const Vec3 &n) {
+    return es::SupportFit::of(es::Plane{Vec3(0, 0, 0), n});
+  };
+  support.setFit(0, fitWithNormal(Vec3(1, 0, 0)));
+  support.setFit(1, fitWithNormal(Vec3(0, 1, 0)));
+  support.setFit(3, fitWithNormal(Vec3(0, 0, 1)));
+  constexpr std::uint32_t kNo = es::SupportPlanes::kNoVertex;
+  support.nearby.assign(5, {kNo, kNo, kNo});
+  support.nearby[0] = {1, 2, 3};  // vertex 2 has no plane
+  std::array<const es::Plane *, 4> planes{};
+  ASSERT_EQ(es::detail::projectionPlanes(support, 0, planes), 3);
+  EXPECT_EQ(planes[0], &support.plane(0));
+  EXPECT_EQ(planes[1], &support.plane(1));
+  EXPECT_EQ(planes[2], &support.plane(3));
+  EXPECT_EQ(es::detail::projectionPlanes(support, 4, planes), 1) << "nothing nearby: own only";
 }

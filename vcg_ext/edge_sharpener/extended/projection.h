@@ -1,9 +1,13 @@
 // Extended method, after placement: the zone vertices beside a sharpened
-// edge moved onto their region's plane.
+// edge moved onto their region's plane (or a neighbouring region's, where
+// that one cannot take them).
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "../options.h"
@@ -90,6 +94,37 @@ bool moveKeepsFaces(const MeshType &m, const std::vector<std::uint32_t> &faces, 
   return true;
 }
 
+/// The planes a zone vertex v may be projected onto, in the order they are
+/// tried: its own region's, then those of the other regions found near it
+/// (SupportPlanes::nearby, closest first). \return how many were written.
+inline int projectionPlanes(const SupportPlanes &support, std::size_t v,
+                            std::array<const Plane *, 4> &planes) {
+  int count = 0;
+  planes[count++] = &support.plane(v);
+  if (v < support.nearby.size())
+    for (const std::uint32_t u : support.nearby[v]) {
+      if (u == SupportPlanes::kNoVertex) break;
+      if (support.plane(u).normal.SquaredNorm() > 0) planes[count++] = &support.plane(u);
+    }
+  return count;
+}
+
+/// Whether a point moved from `from` to `to` lies no farther (beyond
+/// `tolerance`) from any of the first `count` planes than it did: a zone
+/// vertex inside a corner, off all its planes, may land on a neighbour's
+/// plane only where that leaves it as near the others. Zero normals are
+/// skipped. Pure.
+inline bool noFartherFromPlanes(const std::array<const Plane *, 4> &planes, int count,
+                                const Vec3 &from, const Vec3 &to, double tolerance) {
+  for (int i = 0; i < count; ++i) {
+    const Plane &pl = *planes[i];
+    if (pl.normal.SquaredNorm() == 0) continue;
+    if (std::abs(pl.normal * (to - pl.point)) > std::abs(pl.normal * (from - pl.point)) + tolerance)
+      return false;
+  }
+  return true;
+}
+
 }  // namespace detail
 
 /// Moves each labelled zone vertex (an original vertex outside every region)
@@ -98,7 +133,13 @@ bool moveKeepsFaces(const MeshType &m, const std::vector<std::uint32_t> &faces, 
 /// vertices on the rounded band. A move longer
 /// than `opt.maxProjectionFactor` x the vertex's mean edge length, or one
 /// that would flip an incident face or create an angle below the
-/// degenerate threshold, is not made (counted in stats.projectionsRejected;
+/// degenerate threshold, is not made. Then the planes of the other regions
+/// near it are tried, closest first, where the move leaves the vertex no
+/// farther from any of its planes (detail::noFartherFromPlanes): a voxel
+/// remesher's vertex in a convex corner's cell lies off all three faces,
+/// and once the corner is restored its own plane would fold a face, while
+/// another face's plane takes it. A vertex no plane takes stays (counted in
+/// stats.projectionsRejected;
 /// the moves the guards leave are counted at the end, from VertexMoves).
 /// Region vertices never move.
 /// \pre the mesh is the one detection labelled (zones.inputFaces), split by
@@ -119,16 +160,26 @@ std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::siz
     if (slot == detail::CandidateFaces::kNone || candidates.facesOf[slot].empty()) continue;
     const std::vector<std::uint32_t> &faces = candidates.facesOf[slot];
     const Vec3 p = positionOf(&m.vert[v]);
-    const Vec3 target = projectOntoPlane(zones.support.plane(v), p);
-    const double step = (target - p).Norm();
+    std::array<const Plane *, 4> planes;
+    const int planeCount = detail::projectionPlanes(zones.support, v, planes);
     // A move below the mesh's float resolution changes nothing: not counted.
-    if (vcg::Point3<Scalar>::Construct(target) == m.vert[v].cP()) continue;
-    if (step > detail::maxProjectionStep(m, faces, v, p, opt.maxProjectionFactor) ||
-        !detail::moveKeepsFaces(m, faces, v, target, opt.degenerateAngleRad)) {
+    if (vcg::Point3<Scalar>::Construct(projectOntoPlane(*planes[0], p)) == m.vert[v].cP()) continue;
+    const double maxStep = detail::maxProjectionStep(m, faces, v, p, opt.maxProjectionFactor);
+    const double tolerance = 1e-9 * zones.support.sampleSpacing;
+    std::optional<Vec3> chosen;
+    for (int i = 0; i < planeCount && !chosen; ++i) {
+      const Vec3 target = projectOntoPlane(*planes[i], p);
+      if ((target - p).Norm() > maxStep ||
+          (i > 0 && !detail::noFartherFromPlanes(planes, planeCount, p, target, tolerance)) ||
+          !detail::moveKeepsFaces(m, faces, v, target, opt.degenerateAngleRad))
+        continue;
+      chosen = target;
+    }
+    if (!chosen) {
       ++stats.projectionsRejected;
       continue;
     }
-    m.vert[v].P() = vcg::Point3<Scalar>::Construct(target);
+    m.vert[v].P() = vcg::Point3<Scalar>::Construct(*chosen);
     ++moved;
   }
   return moved;
