@@ -28,7 +28,10 @@ def parse_args(doc):
     ap.add_argument("--method", default="auto")
     ap.add_argument("--out", help="also write the table(s) to this markdown file")
     ap.add_argument("extra", nargs="*", help="further edge-sharpener options (after --)")
-    return ap.parse_args()
+    args = ap.parse_args()
+    # The samplers run in their own work directories: a relative --build would not be found.
+    args.build = os.path.abspath(args.build)
+    return args
 
 
 def require_open3d(script):
