@@ -331,7 +331,14 @@ WORSE_CAUSES = {
         "is no region, and a 3-vertex feature took the outer and the inner facet for the "
         "flanks of one edge: their planes meet on a nearly vertical line 0.09 above the cap. "
         "An edge whose planes' line turns more than 45 degrees out of its chamfer now stays as "
-        "it was."),
+        "it was. With vdbproj 2% (diagnosed with `evidence-study --vertices`; no rule made of "
+        "it) the worst points are 89 new vertices along the outer 16-gon's edge at x = -0.83, "
+        "z = 0, the tube's whole length: the planes fitted beside that edge meet at 68 degrees "
+        "where its facets meet at 22.5 (the facets are 1.2 cells wide at 2%, so a fitted "
+        "neighbourhood likely reaches the next facet), and the vertices move 0.72 spacings "
+        "outwards, to 0.63 spacings (1.26% of the diagonal) outside the reference. Their "
+        "samples lie within 0.34 spacings of those planes, under the evidence's 0.6 bound; "
+        "the spread test (0.35) does not catch it at 0.3 or 0.25 either."),
     "abc6": (
         "the reference has designed 45-degree conical chamfers (about 1e-4 units tall, 2-3 cells at 0.5%) between "
         "its top and its cylindrical walls. Both fitted planes are exact (top z = 1.5875e-3, wall "
