@@ -331,14 +331,15 @@ WORSE_CAUSES = {
         "is no region, and a 3-vertex feature took the outer and the inner facet for the "
         "flanks of one edge: their planes meet on a nearly vertical line 0.09 above the cap. "
         "An edge whose planes' line turns more than 45 degrees out of its chamfer now stays as "
-        "it was. With vdbproj 2% (diagnosed with `evidence-study --vertices`; no rule made of "
-        "it) the worst points are 89 new vertices along the outer 16-gon's edge at x = -0.83, "
-        "z = 0, the tube's whole length: the planes fitted beside that edge meet at 68 degrees "
-        "where its facets meet at 22.5 (the facets are 1.2 cells wide at 2%, so a fitted "
-        "neighbourhood likely reaches the next facet), and the vertices move 0.72 spacings "
-        "outwards, to 0.63 spacings (1.26% of the diagonal) outside the reference. Their "
-        "samples lie within 0.34 spacings of those planes, under the evidence's 0.6 bound; "
-        "the spread test (0.35) does not catch it at 0.3 or 0.25 either."),
+        "it was. With vdbproj 2% (diagnosed with `evidence-study --vertices` and `--sources`; no "
+        "rule made of it) the worst points are 89 new vertices along the outer 16-gon's edge at "
+        "x = -0.83, z = 0, the tube's whole length. The two facets beside that edge, 1.2 cells "
+        "wide at 2%, are zone: their vertices take the planes of the next facets (normals 34 "
+        "degrees either side of the edge's, 0.34 spacings from them), which meet at 68 degrees "
+        "0.63 spacings (1.26% of the diagonal) outside the reference, and the sharpener squares "
+        "the two facets off as it would a sampling chamfer. Facets that narrow look like one "
+        "(the designed bevels' limit); their samples' distance, 0.34 spacings, is under the "
+        "evidence's 0.6 bound, and the spread test (0.35) does not catch it at 0.3 or 0.25."),
     "abc6": (
         "the reference has designed 45-degree conical chamfers (about 1e-4 units tall, 2-3 cells at 0.5%) between "
         "its top and its cylindrical walls. Both fitted planes are exact (top z = 1.5875e-3, wall "

@@ -62,10 +62,11 @@ void printSources(const std::string &name, const MeshType &m,
       std::printf(
           "{\"case\": \"%s\", \"feature\": %u, \"corner\": %d, \"weak\": %d, "
           "\"weak_otherwise\": %d, \"source\": %zu, \"region\": %d, \"off_plane\": %.4f, "
-          "\"off_other_plane\": %.4f, \"x\": [%.6g, %.6g, %.6g]}\n",
+          "\"off_other_plane\": %.4f, \"x\": [%.6g, %.6g, %.6g], \"normal\": [%.4f, %.4f, "
+          "%.4f]}\n",
           name.c_str(), c, int(features[c].corner), int(weak[c]), int(weakOtherwise[c]), s,
           s < support.region.size() ? support.region[s] : -1, offPlane(own, s), other, p[0], p[1],
-          p[2]);
+          p[2], own.normal[0], own.normal[1], own.normal[2]);
     }
   }
 }
