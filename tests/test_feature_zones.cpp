@@ -309,6 +309,30 @@ TEST(ProjectZoneVertices, ANeighboursPlaneTakesAVertexOnlyNoFartherFromItsOtherP
   EXPECT_TRUE(es::detail::noFartherFromPlanes(withNone, 2, p, es::projectOntoPlane(z, p), 0));
 }
 
+// Moving vertex 0 across: a face of area that the move would fold refuses
+// it; a face whose other two corners sit at one point (two new vertices
+// placed on one target of a grid-aligned edge) has no way to face, before or
+// after, and does not.
+TEST(ProjectZoneVertices, AFaceWithoutAreaDoesNotRefuseAMove) {
+  es::Mesh m;
+  es::hand_built::makeMesh(m,
+                           {Vec3(0, 0, 0.3), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0),
+                            Vec3(0, -1, 0), Vec3(-1, 0, 0)},
+                           {{0, 1, 2}, {0, 3, 5}});
+  const double degenerate = 1.0 * M_PI / 180.0;
+  const std::vector<std::uint32_t> areaFace{0}, noAreaFace{1};
+  // Down onto z = 0, within the triangle: the face keeps facing +z.
+  EXPECT_TRUE(es::detail::moveKeepsFaces(m, areaFace, 0, Vec3(0.3, 0.3, 0), degenerate));
+  // Beyond the edge from 1 to 2: the face would face -z.
+  EXPECT_FALSE(es::detail::moveKeepsFaces(m, areaFace, 0, Vec3(1, 1, 0), degenerate));
+  // Corners 3 and 5 coincide: no area before, none after, wherever 0 goes.
+  EXPECT_TRUE(es::detail::moveKeepsFaces(m, noAreaFace, 0, Vec3(0.3, 0.3, 0), degenerate));
+  const std::vector<std::uint32_t> both{0, 1};
+  EXPECT_TRUE(es::detail::moveKeepsFaces(m, both, 0, Vec3(0.3, 0.3, 0), degenerate));
+  EXPECT_FALSE(es::detail::moveKeepsFaces(m, both, 0, Vec3(1, 1, 0), degenerate))
+      << "the face with area still refuses";
+}
+
 // The planes tried for a zone vertex: its own first, then those of the
 // vertices listed nearby, closest first, up to the first padding entry;
 // nearby vertices without a plane are skipped.

@@ -25,14 +25,8 @@ MIN_MAX_FACTORS = {
 
 
 def main():
-    failures = []
-    outcomes = checks.default_method_outcomes(checks.load_results()["cases"], failures,
-                                              MULTIPLIER, width=28)
-    for c, before, after in outcomes:
-        checks.require_factor(c, before, after, "max",
-                              MIN_MAX_FACTORS[(c["model"], c["resolution"])], failures)
-    checks.require_measured(outcomes, ("model", "resolution"), MIN_MAX_FACTORS, failures)
-    checks.finish(failures, "corner cells: the remesher's corner vertices onto a face, max down")
+    checks.check_max_factors_by_model(
+        MIN_MAX_FACTORS, "corner cells: the remesher's corner vertices onto a face, max down", MULTIPLIER)
 
 
 if __name__ == "__main__":

@@ -105,6 +105,20 @@ def check_rms_factors_by_resolution(input_key, min_rms_factors, passed, multipli
     finish(failures, passed)
 
 
+def check_max_factors_by_model(min_max_factors, passed, multiplier=2.0):
+    """The whole check of a results JSON whose inputs are the (model, resolution) keys of
+    `min_max_factors`: each made, sharpened by the default method and measured, none worse,
+    and its max reduction factor at least min_max_factors[(model, resolution)]. Exits like
+    finish()."""
+    failures = []
+    outcomes = default_method_outcomes(load_results()["cases"], failures, multiplier, width=28)
+    for c, before, after in outcomes:
+        require_factor(c, before, after, "max", min_max_factors[(c["model"], c["resolution"])],
+                       failures)
+    require_measured(outcomes, ("model", "resolution"), min_max_factors, failures)
+    finish(failures, passed)
+
+
 def require_measured(outcomes, fields, expected, failures):
     """Appends a failure unless the cases of `outcomes` (default_method_outcomes), each keyed by
     the tuple of its `fields`, are exactly the set `expected`: no input may go missing."""
