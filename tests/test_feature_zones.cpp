@@ -311,14 +311,14 @@ TEST(ProjectZoneVertices, ANeighboursPlaneTakesAVertexOnlyNoFartherFromItsOtherP
 
 // Moving vertex 0 across: a face of area that the move would fold refuses
 // it; a face whose other two corners sit at one point (two new vertices
-// placed on one target of a grid-aligned edge) has no way to face, before or
-// after, and does not.
+// placed on one target of a grid-aligned edge), exactly or up to a float's
+// rounding, has no way to face, before or after, and does not.
 TEST(ProjectZoneVertices, AFaceWithoutAreaDoesNotRefuseAMove) {
   es::Mesh m;
   es::hand_built::makeMesh(m,
                            {Vec3(0, 0, 0.3), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0),
-                            Vec3(0, -1, 0), Vec3(-1, 0, 0)},
-                           {{0, 1, 2}, {0, 3, 5}});
+                            Vec3(0, -1, 0), Vec3(-1, 0, 0), Vec3(-1, 1e-7, 0)},
+                           {{0, 1, 2}, {0, 3, 5}, {0, 6, 3}});
   const double degenerate = 1.0 * M_PI / 180.0;
   const std::vector<std::uint32_t> areaFace{0}, noAreaFace{1};
   // Down onto z = 0, within the triangle: the face keeps facing +z.
@@ -327,6 +327,9 @@ TEST(ProjectZoneVertices, AFaceWithoutAreaDoesNotRefuseAMove) {
   EXPECT_FALSE(es::detail::moveKeepsFaces(m, areaFace, 0, Vec3(1, 1, 0), degenerate));
   // Corners 3 and 5 coincide: no area before, none after, wherever 0 goes.
   EXPECT_TRUE(es::detail::moveKeepsFaces(m, noAreaFace, 0, Vec3(0.3, 0.3, 0), degenerate));
+  const std::vector<std::uint32_t> rounded{2};
+  EXPECT_TRUE(es::detail::moveKeepsFaces(m, rounded, 0, Vec3(0.3, 0.3, 0), degenerate))
+      << "corners 1e-7 apart: a float's rounding of one point";
   const std::vector<std::uint32_t> both{0, 1};
   EXPECT_TRUE(es::detail::moveKeepsFaces(m, both, 0, Vec3(0.3, 0.3, 0), degenerate));
   EXPECT_FALSE(es::detail::moveKeepsFaces(m, both, 0, Vec3(1, 1, 0), degenerate))

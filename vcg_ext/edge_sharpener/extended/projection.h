@@ -74,9 +74,10 @@ double maxProjectionStep(const MeshType &m, const std::vector<std::uint32_t> &fa
 
 /// Whether moving v to `target` keeps every face of `faces` facing the same
 /// way and creates no angle below `degenerateAngleRad` that was not there. A
-/// face without area (placement put two of its corners at one point, where
-/// two new vertices share a target on a grid-aligned edge) has no way to face
-/// and does not refuse the move; the cleanup collapses it later.
+/// face with two corners at one point before the move and after it
+/// (hasCoincidentCorners: placement put two new vertices of a grid-aligned
+/// edge on one target) faces no way and refuses nothing; the cleanup
+/// collapses it later.
 template <class MeshType>
 bool moveKeepsFaces(const MeshType &m, const std::vector<std::uint32_t> &faces, std::size_t v,
                     const Vec3 &target, double degenerateAngleRad) {
@@ -87,12 +88,13 @@ bool moveKeepsFaces(const MeshType &m, const std::vector<std::uint32_t> &faces, 
       q[k] = positionOf(f.cV(k));
       r[k] = vcg::tri::Index(m, f.cV(k)) == v ? target : q[k];
     }
+    if (hasCoincidentCorners(q[0], q[1], q[2]) && hasCoincidentCorners(r[0], r[1], r[2])) continue;
     const Vec3 before = (q[1] - q[0]) ^ (q[2] - q[0]);
     const Vec3 after = (r[1] - r[0]) ^ (r[2] - r[0]);
     const double minBefore = minTriangleAngle(q[0], q[1], q[2]);
     const double minAfter = minTriangleAngle(r[0], r[1], r[2]);
-    const bool keepsFacing = before * after > 0 || before.SquaredNorm() == 0;
-    if (!(keepsFacing && (minAfter >= degenerateAngleRad || minAfter >= minBefore))) return false;
+    if (!(before * after > 0 && (minAfter >= degenerateAngleRad || minAfter >= minBefore)))
+      return false;
   }
   return true;
 }
