@@ -26,7 +26,8 @@ MIN_MAX_FACTORS = {
 
 def main():
     checks.check_max_factors_by_model(
-        MIN_MAX_FACTORS, "corner cells: the remesher's corner vertices onto a face, max down", MULTIPLIER)
+        MIN_MAX_FACTORS, "corner cells: the remesher's corner vertices onto a face, max down",
+        MULTIPLIER)
 
 
 if __name__ == "__main__":
