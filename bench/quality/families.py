@@ -730,6 +730,17 @@ def default_section(results):
           "vertex beside them can no longer move onto its plane without flipping a face, so "
           "it stays a spacing out; finished_hexprism OpenVDB 1% RMS +1.6%, pyramid OpenVDB "
           "2% 0.931% -> 0.857%. `ctest -R region_planes`.", ""]
+    L += ["**Where Screened Poisson's max stays** (located 2026-11-29, tuning half, with "
+          "dense samples of both sides; nothing changed). Sharpened by the default, 7_8ths_cube "
+          "and three of the generated shapes keep their max at a convex corner of the "
+          "reference, still rounded (bevelled_block's lies beside its designed features): "
+          "7_8ths_cube 0.83% at (20, -20, -20), cross_prism 0.93% at (-0.3, "
+          "-0.9, -0.3), cylinder_block 0.72% at (0.8, 0.8, -0.5), lblock_tilted 0.86% at a "
+          "corner of the tilted block. On 7_8ths_cube the corner's zone breaks into about ten "
+          "small features, each weak (samples up to 1.15 spacings off their planes: the "
+          "reconstruction's blend), and the edges are sharpened up to them. A corner whose "
+          "edges are sharpened is pinned by their three planes, but a designed vertex blend "
+          "looks the same to the guard; no rule was made.", ""]
     L += ["**Planar regions' own planes** (2026-11-27, chosen on the tuning half). Placement "
           "fits a region's plane next to the feature (two face rings of a border vertex), "
           "where Screened Poisson rounds a planar face into its features, so the new vertices "
