@@ -16,6 +16,7 @@ inputs, the share of vertices with two coordinates shared by at least three othe
 """
 import argparse
 import collections
+import functools
 import json
 import os
 
@@ -49,6 +50,7 @@ def exact(features, gate):
     return value is not None and value <= bound
 
 
+@functools.lru_cache(maxsize=None)  # an input flips under several gates
 def lattice_share(path):
     import numpy as np
     import open3d as o3d
@@ -67,9 +69,10 @@ def main():
     ap.add_argument("--inputs", help="the quality cache's inputs directory")
     args = ap.parse_args()
     cases = collections.defaultdict(list)
-    for line in open(args.features):
-        f = json.loads(line)
-        cases[f["case"]].append(f)
+    with open(args.features) as lines:
+        for line in lines:
+            f = json.loads(line)
+            cases[f["case"]].append(f)
     for gate in GATES:
         gained = lost = 0.0
         flips = []
