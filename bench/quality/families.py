@@ -730,8 +730,10 @@ def default_section(results):
           "vertex beside them can no longer move onto its plane without flipping a face, so "
           "it stays a spacing out; finished_hexprism OpenVDB 1% RMS +1.6%, pyramid OpenVDB "
           "2% 0.931% -> 0.857%. `ctest -R region_planes`.", ""]
-    L += ["**Where Screened Poisson's max stays** (located 2026-11-29, tuning half, with "
-          "dense samples of both sides; nothing changed). Sharpened by the default, 7_8ths_cube "
+    L += ["**Where Screened Poisson's max stays** (located 2026-11-29, tuning half; nothing "
+          "changed: `mesh-distance REFERENCE SHARPENED --samples 1000000 --color-out F.ply` "
+          "colours the reference's vertices by their distance, the largest at the corner "
+          "named). Sharpened by the default, 7_8ths_cube "
           "and three of the generated shapes keep their max at a convex corner of the "
           "reference, still rounded (bevelled_block's lies beside its designed features): "
           "7_8ths_cube 0.83% at (20, -20, -20), cross_prism 0.93% at (-0.3, "
