@@ -1103,7 +1103,33 @@ def default_section(results):
           "0.445% -> 1.08%) and tube by OpenVDB 0.5% (0.257% -> 0.329%, its input's). "
           "Reverted; the validation half has seen this gate. "
           "`bench/study/exact_sampling_gates.py` prints the gates' figures from "
-          "`evidence_study.py --half tuning` (with `--inputs`, the grid share).", ""]
+          "`evidence_study.py --half tuning` (with `--inputs`, the grid share).", "",
+          "**Corners on their regions' own planes** (studied on 2026-11-29, not adopted). "
+          "Sharpened by the default, lblock_tilted by Screened Poisson keeps 6 of the 14 "
+          "vertices of its reference 0.48-0.86% of the diagonal off, all convex corners (the "
+          "others within 0.12%). At each a "
+          "corner face was found and its new vertex refused: by the flank-bend test at four, "
+          "by the intermediate-region test at one (the fits next to the corner see the "
+          "reconstruction's rounding), and at the sixth its feature came out weak, beside a "
+          "remnant region of a few faces left by the opening of region contacts. Tried: a "
+          "corner vertex whose three regions are planes (their own planes, as for edges), "
+          "with no other region near a source and fits turned at most 30 degrees from them, "
+          "takes the own planes' corner where that lies more than 0.1 spacings from the "
+          "fitted planes', judged by the apex and distance tests only. Tuning half, every "
+          "default output compared with the full run: three changed, all better (lblock_tilted "
+          "by Screened Poisson RMS 0.0828% -> 0.0784%, five of its six corners now within 0.12 "
+          "spacings, its max unchanged at the sixth; lblock_tilted by OpenVDB 2% RMS -14%, "
+          "bevelled_block by OpenVDB 2% RMS -1.9%), none worse. Validation half, measured "
+          "once: abc6 by Screened Poisson max 0.609% -> 0.746% (a corner placed on its top, "
+          "where the designed conical chamfers are), fandisk by IER 1% max 0.593% -> 0.656% "
+          "at every multiplier, Screened Poisson max ×1.18 -> ×1.15; gains only on "
+          "finished_hexprism by OpenVDB 2% (0.926% -> 0.904%) and lblock by Screened Poisson "
+          "(RMS -2.5%). The curvature tests refuse designed corners too, so they stay. "
+          "Reverted; the validation half has seen this rule. Returning to the zone the "
+          "remnant regions smaller than one sample spacing also restored the sixth corner "
+          "(lblock_tilted by Screened Poisson max 0.862% -> 0.819%, where its concave edge "
+          "then holds the max) but made octa-flower17k by UMR 1% at multiplier 1.5 worse "
+          "(1.065% -> 1.338%, a petal's tip) on the tuning half: not taken further.", ""]
     return L
 
 
