@@ -2,7 +2,7 @@
 voxel remeshers and uniform resamplings cut into chamfers (Attene et al. 2003).
 
     import edge_sharpener as es
-    vertices, faces, report = es.sharpen(vertices, faces, method="extended")
+    vertices, faces, report = es.sharpen(vertices, faces)  # the default method, auto
 
 numpy arrays in, numpy arrays out: sharpen(), detect(), mesh_distance().
 OPTIONS describes every keyword (from the C++ option table); see
