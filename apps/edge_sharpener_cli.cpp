@@ -118,7 +118,7 @@ int run(const CliOptions &cli) {
   es::io::returnLargeBlocksToTheSystem();  // see capacity_hint.h
   es::Mesh m;
   if (!cli.detectOnly) es::io::reserveForSharpening(cli.input, m);  // see capacity_hint.h
-  es::io::loadMesh(cli.input, m);
+  const int inputAttributes = es::io::loadMesh(cli.input, m);
   // With --reference, the input's distance is measured before sharpening (no
   // copy kept: measuring changes no position), so a mesh it cannot be
   // measured on is refused before any output is written.
@@ -142,7 +142,7 @@ int run(const CliOptions &cli) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   namespace mask = vcg::tri::io;
-  int saveMask = 0;
+  int saveMask = inputAttributes & mask::Mask::IOM_VERTCOLOR;  // a PLY's vertex colours
   if (opt.colorize) saveMask |= mask::Mask::IOM_VERTCOLOR | mask::Mask::IOM_FACECOLOR;
   if (cli.detectOnly) saveMask |= mask::Mask::IOM_FACEFLAGS;
   es::io::saveMesh(m, cli.output, saveMask);

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -138,8 +139,9 @@ inline StlSoup readStl(const std::string &path) {
 
 /// An indexed polygon mesh read by the text readers below.
 struct PolygonMesh {
-  std::vector<float> coords;  // 3 per vertex
-  std::vector<long> index;    // the faces' vertex indices, 0-based, validated
+  std::vector<float> coords;          // 3 per vertex
+  std::vector<unsigned char> colors;  // RGBA, 4 per vertex; empty: the file has none
+  std::vector<long> index;            // the faces' vertex indices, 0-based, validated
   std::vector<std::size_t>
       offset;  // face f is index[offset[f], offset[f + 1]); back() = index.size()
   std::size_t faceCount() const { return offset.empty() ? 0 : offset.size() - 1; }
@@ -292,8 +294,12 @@ void buildFromPolygons(const PolygonMesh &p, MeshType &m) {
   const std::size_t nv = p.coords.size() / 3;
   if (nv > 0) {
     auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, nv);
-    for (std::size_t i = 0; i < nv; ++i, ++vi)
+    for (std::size_t i = 0; i < nv; ++i, ++vi) {
       for (int c = 0; c < 3; ++c) vi->P()[c] = p.coords[3 * i + c];
+      if (!p.colors.empty())
+        vi->C() = vcg::Color4b(p.colors[4 * i], p.colors[4 * i + 1], p.colors[4 * i + 2],
+                               p.colors[4 * i + 3]);
+    }
   }
   if (triangles == 0) return;
   auto fi = vcg::tri::Allocator<MeshType>::AddFaces(m, triangles);
@@ -509,7 +515,8 @@ class PlyBodyReader {
 };
 
 /// Reads a PLY file (ASCII, binary little or big endian) with our own strict
-/// parser: vertex x, y, z; faces from "face" (list vertex_indices or
+/// parser: vertex x, y, z and, where the file has them, red, green, blue
+/// (alpha) as bytes or as floats in [0, 1]; faces from "face" (list vertex_indices or
 /// vertex_index) and "tristrips" (list vertex_indices, -1 restarts a strip);
 /// every other element and property is skipped. Every face index is checked
 /// against the vertex count, polygons need 3 or more vertices.
@@ -549,16 +556,32 @@ inline PolygonMesh readPly(const std::string &bytes) {
       if (e.count > 0 && (axis[0] < 0 || axis[1] < 0 || axis[2] < 0))
         fail("vertex element without x, y, z");
       if (e.count >= 0xffffffffu) fail("too many vertices");
+      // Vertex colours: red, green, blue (alpha optional), bytes or floats in [0, 1].
+      int channel[4] = {-1, -1, -1, -1};
+      static const char *const kChannels[4] = {"red", "green", "blue", "alpha"};
+      for (std::size_t i = 0; i < e.properties.size(); ++i)
+        for (int c = 0; c < 4; ++c)
+          if (!e.properties[i].list && e.properties[i].name == kChannels[c]) channel[c] = int(i);
+      const bool coloured = channel[0] >= 0 && channel[1] >= 0 && channel[2] >= 0;
       nv = long(e.count);
       mesh.coords.resize(3 * e.count);
+      if (coloured) mesh.colors.assign(4 * e.count, 255);
       for (std::uint64_t v = 0; v < e.count; ++v)
         for (std::size_t i = 0; i < e.properties.size(); ++i) {
           const PlyProperty &p = e.properties[i];
           const int c = int(i) == axis[0] ? 0 : int(i) == axis[1] ? 1 : int(i) == axis[2] ? 2 : -1;
-          if (c < 0)
-            in.skip(p);
-          else
+          int ch = -1;
+          for (int k = 0; k < 4 && coloured; ++k)
+            if (int(i) == channel[k]) ch = k;
+          if (c >= 0) {
             mesh.coords[3 * v + c] = float(in.read(p.type, p.isFloat, p.isSigned));
+          } else if (ch >= 0) {
+            const double value = in.read(p.type, p.isFloat, p.isSigned) * (p.isFloat ? 255 : 1);
+            mesh.colors[4 * v + ch] = static_cast<unsigned char>(
+                std::isfinite(value) ? std::clamp(std::round(value), 0.0, 255.0) : 0.0);
+          } else {
+            in.skip(p);
+          }
         }
       continue;
     }
@@ -640,9 +663,12 @@ void buildFromSoup(const StlSoup &soup, MeshType &m) {
 /// coincident vertices are merged; other formats are taken as they are.
 /// Polygons are triangulated as fans from their first vertex (all formats).
 /// Malformed files (truncated, garbage, indices out of range, empty) throw.
+/// \return what was read beside positions and faces, as a vcg::tri::io::Mask
+///         combination: IOM_VERTCOLOR for a PLY with vertex colours, else 0
+///         (the same mask makes saveMesh write them back).
 /// \throws std::runtime_error with a one-line message.
 template <class MeshType>
-void loadMesh(const std::string &path, MeshType &m) {
+int loadMesh(const std::string &path, MeshType &m) {
   const std::string ext = lowerExtension(path);
   if (!isSupportedExtension(ext))
     throw std::runtime_error(path + ": unsupported format (use .ply, .off, .obj or .stl)");
@@ -651,6 +677,7 @@ void loadMesh(const std::string &path, MeshType &m) {
   if (probe.tellg() <= 0) throw std::runtime_error(path + ": cannot read mesh (empty file)");
   probe.close();
   m.Clear();
+  int read = 0;
   // Every format is read by the strict readers above: vcglib's importers
   // accept out-of-range indices, drop faces silently, read past the end of
   // malformed files, or (PLY) read freed memory on a bad polygon index.
@@ -665,7 +692,9 @@ void loadMesh(const std::string &path, MeshType &m) {
     } else {
       std::ifstream file(path, std::ios::binary);
       const std::string bytes((std::istreambuf_iterator<char>(file)), {});
-      detail::buildFromPolygons(detail::readPly(bytes), m);
+      const detail::PolygonMesh polygons = detail::readPly(bytes);
+      if (!polygons.colors.empty()) read |= vcg::tri::io::Mask::IOM_VERTCOLOR;
+      detail::buildFromPolygons(polygons, m);
     }
   } catch (const std::exception &e) {  // also bad_alloc / length_error from absurd counts
     m.Clear();
@@ -674,6 +703,7 @@ void loadMesh(const std::string &path, MeshType &m) {
     throw std::runtime_error(path + ": cannot read mesh (" + why + ")");
   }
   vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
+  return read;
 }
 
 /// Writes `m` to `path` through a temporary file renamed into place, so a

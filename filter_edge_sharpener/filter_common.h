@@ -211,6 +211,13 @@ inline FilterOutcome runFilter(const FilterSpec &f, MeshModel &mm, const RichPar
   mm.cm.sfn = int(vcg::tri::UpdateSelection<CMeshO>::FaceCount(mm.cm));
   outcome.log.push_back(f.name);
   for (const std::string &line : lines(formatReport(report))) outcome.log.push_back("  " + line);
+  // New vertices take their sources' mean colour (subdivide()); per-wedge
+  // texture coordinates are face data, copied from the split face.
+  if (report.geometryChanged && report.outputVertices > report.inputVertices &&
+      vcg::tri::HasPerWedgeTexCoord(mm.cm))
+    outcome.log.push_back(
+        "  note: the new faces copy their parent face's per-wedge texture coordinates (not "
+        "interpolated): the texture may look stretched along the restored edges");
   return outcome;
 }
 

@@ -235,6 +235,32 @@ TEST(Subdivision, CornerSplitsIntoAFanOfSixAroundItsCentre) {
   EXPECT_TRUE(es::hand_built::adjacencyMatchesRebuild(m));
 }
 
+// A coloured mesh (a scan with vertex colours, in MeshLab): each inserted
+// vertex takes its sources' mean colour and quality, not vcglib's white.
+TEST(Subdivision, InsertedVerticesTakeTheirSourcesMeanColourAndQuality) {
+  es::Mesh m;
+  tetrahedron(m, 0.3);
+  const vcg::Color4b colour[4] = {vcg::Color4b(200, 0, 0, 255), vcg::Color4b(0, 100, 0, 255),
+                                  vcg::Color4b(0, 0, 51, 255), vcg::Color4b(9, 9, 9, 255)};
+  for (std::size_t v = 0; v < 4; ++v) {
+    m.vert[v].C() = colour[v];
+    m.vert[v].Q() = float(v + 1);
+  }
+  es::MeshLabels<es::Mesh> labels(m);
+  markChamferEdges(m, labels, {0, 1, 2});
+  const es::SplitPlan plan = es::planSplits(m, labels);
+  es::subdivide(m, plan, labels);
+  ASSERT_EQ(m.vert.size(), 8u);
+  for (std::size_t v = 0; v < 4; ++v) EXPECT_EQ(m.vert[v].cC(), colour[v]);  // as they were
+  const std::size_t ab = insertedBetween(plan, kA, kB), ca = insertedBetween(plan, kC, kA);
+  EXPECT_EQ(m.vert[ab].cC(), vcg::Color4b(100, 50, 0, 255));
+  EXPECT_EQ(m.vert[ca].cC(), vcg::Color4b(100, 0, 26, 255));  // 25.5 rounds up
+  EXPECT_FLOAT_EQ(m.vert[ab].cQ(), 1.5f);
+  const std::size_t centre = plan.originalVertexCount + std::size_t(plan.faces[0].centerVertex);
+  EXPECT_EQ(m.vert[centre].cC(), vcg::Color4b(67, 33, 17, 255));
+  EXPECT_FLOAT_EQ(m.vert[centre].cQ(), 2.0f);
+}
+
 // A chamfer edge on the mesh border (an open scan cut across a chamfer) gets
 // its own vertex; its two halves stay border edges.
 TEST(Subdivision, ChamferEdgeOnTheBorderStaysABorder) {

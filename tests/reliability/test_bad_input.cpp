@@ -7,11 +7,13 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -262,6 +264,68 @@ INSTANTIATE_TEST_SUITE_P(Files, BadInputFile, ::testing::ValuesIn(kBadInputs),
                            std::replace(n.begin(), n.end(), '.', '_');
                            return n;
                          });
+
+// A scan or a coloured remesh keeps its vertex colours: the PLY's colours are
+// read, written back, and the new vertices take their sources' mean colour
+// (vcglib would make them white). Blue is 7 on every input vertex, so on every
+// output vertex too.
+TEST(ReliabilityUnusualInput, CliKeepsAPlysVertexColours) {
+  const fs::path dir = scratchDir("colours");
+  es::Mesh m;
+  es::io::loadMesh(std::string(EDGE_SHARPENER_SOURCE_DIR) + "/test_meshes/generated/lblock_mc2.ply",
+                   m);
+  vcg::tri::UpdateBounding<es::Mesh>::Box(m);
+  for (auto &v : m.vert) {
+    const auto t = (v.cP() - m.bbox.min) / m.bbox.Diag();
+    v.C() = vcg::Color4b(static_cast<unsigned char>(250 * t[0]),
+                         static_cast<unsigned char>(250 * t[1]), 7, 255);
+  }
+  const fs::path input = dir / "coloured.ply", output = dir / "out.ply";
+  es::io::saveMesh(m, input.string(), vcg::tri::io::Mask::IOM_VERTCOLOR);
+  const RunResult r = run(std::string("'") + EDGE_SHARPENER_CLI + "' --quiet '" + input.string() +
+                              "' '" + output.string() + "'",
+                          dir / "stderr.txt");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  es::Mesh out;
+  EXPECT_EQ(es::io::loadMesh(output.string(), out), vcg::tri::io::Mask::IOM_VERTCOLOR);
+  ASSERT_GT(out.vn, m.vn);  // sharpened: vertices were added
+  int red = 0;
+  for (const auto &v : out.vert) {
+    EXPECT_EQ(v.cC()[2], 7);
+    EXPECT_EQ(v.cC()[3], 255);
+    red = std::max(red, int(v.cC()[0]));
+  }
+  EXPECT_GT(red, 100);  // the gradient came through
+  // Unmoved input vertices keep their colours exactly.
+  std::map<std::array<float, 3>, vcg::Color4b> colourAt;
+  for (const auto &v : m.vert) colourAt[{v.cP()[0], v.cP()[1], v.cP()[2]}] = v.cC();
+  std::size_t unmoved = 0;
+  for (const auto &v : out.vert) {
+    const auto it = colourAt.find({v.cP()[0], v.cP()[1], v.cP()[2]});
+    if (it == colourAt.end()) continue;
+    ++unmoved;
+    EXPECT_EQ(v.cC(), it->second);
+  }
+  EXPECT_GT(unmoved, std::size_t(m.vn) / 2);
+}
+
+// Colours as floats in [0, 1] (some writers), alpha absent: read as bytes,
+// alpha opaque; out of range or not finite, clamped.
+TEST(ReliabilityUnusualInput, PlyFloatColoursAreReadAsBytes) {
+  const fs::path dir = scratchDir("float-colours");
+  const fs::path path = dir / "float_colours.ply";
+  std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                         "property float y\nproperty float z\nproperty float red\n"
+                         "property float green\nproperty float blue\nelement face 1\n"
+                         "property list uchar int vertex_indices\nend_header\n"
+                         "0 0 0 1 0.5 0\n1 0 0 2 -1 nan\n0 1 0 0.2 0.2 0.2\n3 0 1 2\n";
+  es::Mesh m;
+  EXPECT_EQ(es::io::loadMesh(path.string(), m), vcg::tri::io::Mask::IOM_VERTCOLOR);
+  ASSERT_EQ(m.vn, 3);
+  EXPECT_EQ(m.vert[0].cC(), vcg::Color4b(255, 128, 0, 255));
+  EXPECT_EQ(m.vert[1].cC(), vcg::Color4b(255, 0, 0, 255));
+  EXPECT_EQ(m.vert[2].cC(), vcg::Color4b(51, 51, 51, 255));
+}
 
 // The CLI refuses to write over its input, and leaves it intact.
 TEST(ReliabilityBadInput, CliNeverOverwritesItsInput) {

@@ -174,6 +174,39 @@ inline std::vector<std::array<std::size_t, 3>> restedTriangles(const SplitFace &
 
 namespace detail {
 
+/// Gives inserted vertex `v` the mean of its sources' per-vertex colour,
+/// quality and texture coordinate, where the mesh has them (a coloured scan
+/// in MeshLab, say): vcglib gives a new vertex white, 0 and (0, 0), which
+/// would show as spots along every restored edge. Sharpening moves the
+/// vertex later; its attributes stay those of the chamfer it was made on.
+template <class MeshType>
+void blendSourceAttributes(MeshType &m, typename MeshType::VertexType &v,
+                           const InsertedVertexSource &src) {
+  const int n = src.originalCount;
+  if (n <= 0) return;
+  const auto &source = [&](int i) -> const typename MeshType::VertexType & {
+    return m.vert[src.original[std::size_t(i)]];
+  };
+  if (vcg::tri::HasPerVertexColor(m))
+    for (int c = 0; c < 4; ++c) {
+      int sum = 0;
+      for (int i = 0; i < n; ++i) sum += source(i).cC()[c];
+      v.C()[c] = static_cast<unsigned char>((sum + n / 2) / n);  // rounded
+    }
+  if (vcg::tri::HasPerVertexQuality(m)) {
+    double sum = 0;
+    for (int i = 0; i < n; ++i) sum += double(source(i).cQ());
+    v.Q() = static_cast<typename MeshType::VertexType::QualityType>(sum / n);
+  }
+  if (vcg::tri::HasPerVertexTexCoord(m)) {
+    double u = 0, w = 0;
+    for (int i = 0; i < n; ++i) u += double(source(i).cT().U()), w += double(source(i).cT().V());
+    v.T() = source(0).cT();  // its texture index
+    v.T().U() = static_cast<typename MeshType::VertexType::TexCoordType::ScalarType>(u / n);
+    v.T().V() = static_cast<typename MeshType::VertexType::TexCoordType::ScalarType>(w / n);
+  }
+}
+
 /// The parent's face-face adjacency before it was split, per edge.
 struct OldAdjacency {
   std::array<std::size_t, 3> face;
@@ -213,8 +246,10 @@ void updateSplitAdjacency(MeshType &m, const SplitPlan &plan,
 /// Stage 4: inserts the planned vertices at their rest positions and splits
 /// each chamfer face into 2 or 3 triangles and each corner face into a fan of
 /// 6, preserving orientation. Children keep the parent's label and data
-/// (colour, quality, flags); FF topology is updated around the split faces
-/// (the same as vcg::tri::UpdateTopology::FaceFace would rebuild).
+/// (colour, quality, flags); inserted vertices take their sources' mean
+/// per-vertex colour, quality and texture coordinate (blendSourceAttributes).
+/// FF topology is updated around the split faces (the same as
+/// vcg::tri::UpdateTopology::FaceFace would rebuild).
 /// \pre FF topology up to date.
 template <class MeshType>
 SubdivisionStats subdivide(MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels) {
@@ -226,6 +261,7 @@ SubdivisionStats subdivide(MeshType &m, const SplitPlan &plan, MeshLabels<MeshTy
   auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, plan.inserted.size());
   for (const auto &src : plan.inserted) {
     vi->P() = vcg::Point3<Scalar>::Construct(src.rest);
+    detail::blendSourceAttributes(m, *vi, src);
     ++vi;
   }
   std::size_t extra = 0;
