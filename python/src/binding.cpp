@@ -130,6 +130,38 @@ void buildMesh(const CheckedArrays<Real> &arrays, MeshType &m) {
     for (int k = 0; k < 3; ++k) m.face[i].V(k) = &m.vert[std::size_t(index[3 * i + k])];
 }
 
+/// Checks `vertex_colors` (None: none): an (n, 3) or (n, 4) array, n the
+/// vertex count, of integers in [0, 255] or floats in [0, 1]. \return RGBA
+/// bytes, 4 per vertex (alpha 255 where absent; empty for None).
+std::vector<std::uint8_t> checkVertexColors(const py::object &colors, py::ssize_t vertexCount) {
+  if (colors.is_none()) return {};
+  const py::array a = asArray(colors, "vertex_colors");
+  const std::string shapeText = py::str(a.attr("shape")).cast<std::string>();
+  if (a.ndim() != 2 || a.shape(0) != vertexCount || (a.shape(1) != 3 && a.shape(1) != 4))
+    throw es::InputError("vertex_colors must be an array of shape (" + std::to_string(vertexCount) +
+                         ", 3) or (" + std::to_string(vertexCount) +
+                         ", 4), one row per vertex, got shape " + shapeText);
+  const char kind = a.dtype().kind();
+  if (kind != 'u' && kind != 'i' && kind != 'f')
+    throw es::InputError("vertex_colors must hold integers in [0, 255] or floats in [0, 1], got " +
+                         dtypeText(a));
+  const py::array_t<double, py::array::c_style | py::array::forcecast> values(a);
+  const double scale = kind == 'f' ? 255.0 : 1.0, top = kind == 'f' ? 1.0 : 255.0;
+  const py::ssize_t columns = a.shape(1);
+  std::vector<std::uint8_t> rgba(std::size_t(4 * vertexCount), 255);
+  const double *x = values.data();
+  for (py::ssize_t i = 0; i < vertexCount; ++i)
+    for (py::ssize_t c = 0; c < columns; ++c) {
+      const double value = x[i * columns + c];
+      if (!(value >= 0 && value <= top))  // NaN too
+        throw es::InputError("vertex_colors row " + std::to_string(i) + " has value " +
+                             py::str(py::float_(value)).cast<std::string>() + " outside [0, " +
+                             (kind == 'f' ? "1" : "255") + "]");
+      rgba[std::size_t(4 * i + c)] = std::uint8_t(std::lround(value * scale));
+    }
+  return rgba;
+}
+
 template <class MeshType>
 py::tuple meshArrays(const MeshType &m) {
   using Scalar = typename MeshType::ScalarType;
@@ -364,10 +396,13 @@ py::object toPython(const nlohmann::json &j) {
 
 template <class MeshType, class Real>
 py::tuple sharpenAs(const py::array &vertices, const py::array &faces, const py::object &progress,
-                    es::SharpenOptions opt) {
+                    const py::object &vertexColors, es::SharpenOptions opt) {
   const CheckedArrays<Real> arrays = checkArrays<Real>(vertices, faces);
+  const std::vector<std::uint8_t> rgba = checkVertexColors(vertexColors, vertices.shape(0));
   MeshType m;
   buildMesh(arrays, m);
+  for (std::size_t i = 0; 4 * i < rgba.size(); ++i)
+    m.vert[i].C() = vcg::Color4b(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2], rgba[4 * i + 3]);
   es::SharpenReport report;
   const auto start = std::chrono::steady_clock::now();
   runWithoutGil(progress, opt, [&] { report = es::sharpen(m, opt); });
@@ -392,17 +427,28 @@ py::tuple sharpenAs(const py::array &vertices, const py::array &faces, const py:
     colors["vertices"] = vertexColors;
     reportDict["colors"] = colors;
   }
+  if (!rgba.empty()) {
+    // Each new vertex took the mean colour of the vertices it was made
+    // between (subdivide()); colorize paints over them.
+    py::array_t<std::uint8_t> out({py::ssize_t(m.vert.size()), py::ssize_t(4)});
+    auto vc = out.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < m.vert.size(); ++i)
+      for (int c = 0; c < 4; ++c) vc(i, c) = m.vert[i].cC()[c];
+    reportDict["vertex_colors"] = out;
+  }
   const py::tuple out = meshArrays(m);
   return py::make_tuple(out[0], out[1], reportDict);
 }
 
 py::tuple sharpen(const py::object &vertexData, const py::object &faceData,
-                  const py::object &progress, const py::kwargs &options) {
+                  const py::object &progress, const py::object &vertexColors,
+                  const py::kwargs &options) {
   const es::SharpenOptions opt = optionsFrom(options, "sharpen");
   const py::array vertices = asArray(vertexData, "vertices"), faces = asArray(faceData, "faces");
   requireRows3(vertices, "vertices");
-  return isFloat32(vertices) ? sharpenAs<es::Mesh, float>(vertices, faces, progress, opt)
-                             : sharpenAs<es::MeshD, double>(vertices, faces, progress, opt);
+  return isFloat32(vertices)
+             ? sharpenAs<es::Mesh, float>(vertices, faces, progress, vertexColors, opt)
+             : sharpenAs<es::MeshD, double>(vertices, faces, progress, vertexColors, opt);
 }
 
 template <class MeshType, class Real>
@@ -558,7 +604,8 @@ PYBIND11_MODULE(_edge_sharpener, m) {
           "kind.",
           "");
   static const std::string sharpenDoc =
-      "sharpen(vertices, faces, *, progress=None, **options) -> (vertices, faces, report)\n\n" +
+      "sharpen(vertices, faces, *, progress=None, vertex_colors=None, **options) -> "
+      "(vertices, faces, report)\n\n" +
       wrapped(
           "Detects chamfers and corners and sharpens them. Original vertices keep their "
           "index (with the paper method also their position: the others move the feature "
@@ -568,7 +615,11 @@ PYBIND11_MODULE(_edge_sharpener, m) {
           "(n', 3) of the input's float dtype, faces (m', 3) int64, and `report`, a dict with "
           "the content of the CLI's --json report (each stage's counts, 'options' as used, "
           "'seconds'); with colorize=True it also holds 'colors': {'faces': (m', 4) uint8 "
-          "RGBA, 'vertices': (n', 4) uint8 RGBA}.",
+          "RGBA, 'vertices': (n', 4) uint8 RGBA}. vertex_colors, an (n, 3) or (n, 4) array "
+          "of integers in [0, 255] or floats in [0, 1], gives the input's colours: the report "
+          "then holds 'vertex_colors', (n', 4) uint8 RGBA, each new vertex with the mean "
+          "colour of the vertices it was made between (with colorize=True, the labels' "
+          "colours).",
           "") +
       "\n" + arraysDoc + options;
   static const std::string detectDoc =
@@ -595,7 +646,7 @@ PYBIND11_MODULE(_edge_sharpener, m) {
           "");
 
   m.def("sharpen", &sharpen, sharpenDoc.c_str(), py::arg("vertices"), py::arg("faces"),
-        py::kw_only(), py::arg("progress") = py::none());
+        py::kw_only(), py::arg("progress") = py::none(), py::arg("vertex_colors") = py::none());
   m.def("detect", &detect, detectDoc.c_str(), py::arg("vertices"), py::arg("faces"), py::kw_only(),
         py::arg("progress") = py::none());
   m.def("mesh_distance", &meshDistance, distanceDoc.c_str(), py::arg("a_vertices"),

@@ -278,3 +278,42 @@ def test_mesh_distance_bad_input():
     for arrays, kwargs, message in cases:
         with pytest.raises(es.InputError, match=message):
             es.mesh_distance(*arrays, **kwargs)
+
+
+def test_vertex_colors_follow_the_vertices(cube):
+    """A coloured mesh: the original vertices keep their colours (by index,
+    with the paper's method, which moves only new vertices), and each new
+    vertex gets the mean colour of the vertices it was made between (blue is
+    7 everywhere, so on every new vertex too; red follows x)."""
+    vertices, faces = cube
+    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+    red = np.round(250 * (vertices[:, 0] - lo[0]) / (hi[0] - lo[0])).astype(np.uint8)
+    colors = np.stack([red, np.full_like(red, 100), np.full_like(red, 7)], axis=1)
+    copies = frozen_copies(colors)
+    out_v, _, report = es.sharpen(vertices, faces, method="paper", vertex_colors=colors)
+    assert_unchanged((colors,), copies)
+    out_c = report["vertex_colors"]
+    assert out_c.shape == (len(out_v), 4) and out_c.dtype == np.uint8
+    n = len(vertices)
+    assert len(out_v) > n
+    assert np.array_equal(out_c[:n, :3], colors) and (out_c[:, 3] == 255).all()
+    assert (out_c[n:, 1] == 100).all() and (out_c[n:, 2] == 7).all()
+    assert out_c[n:, 0].min() < 50 and out_c[n:, 0].max() > 200  # blends along x, not white
+    # Floats in [0, 1] give the same bytes; without vertex_colors there is no entry.
+    as_float = es.sharpen(vertices, faces, method="paper", vertex_colors=colors / 255.0)[2]
+    assert np.array_equal(as_float["vertex_colors"], out_c)
+    assert "vertex_colors" not in es.sharpen(vertices, faces, method="paper")[2]
+
+
+@pytest.mark.parametrize("colors, message", [
+    (np.zeros((5, 3), np.uint8), "shape"),
+    (np.zeros((1, 2), np.uint8), "shape"),
+    ("red", "shape"),
+    (np.full((6, 3), 256, np.int32), "outside [0, 255]"),
+    (np.full((6, 4), 1.5), "outside [0, 1]"),
+    (np.full((6, 3), np.nan), "outside [0, 1]"),
+    (np.zeros((6, 3), bool), "integers in [0, 255] or floats"),
+])
+def test_bad_vertex_colors_are_refused(colors, message):
+    with pytest.raises(es.InputError, match=message.replace("[", r"\[").replace("]", r"\]")):
+        es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F, vertex_colors=colors)
