@@ -160,6 +160,19 @@ inline std::vector<std::string> contentLines(const std::string &text) {
   return lines;
 }
 
+/// A colour channel of a text format as a byte: a float in [0, 1] (written
+/// with a point or an exponent) scaled by 255, else an integer byte; clamped
+/// to [0, 255], a non-finite value read as 0. False when `token` is no number.
+inline bool readColourChannel(const std::string &token, unsigned char &byte) {
+  float value;
+  if (!readStlNumber(token, value)) return false;
+  const bool isFloat = token.find_first_of(".eE") != std::string::npos;
+  const double scaled = double(value) * (isFloat ? 255.0 : 1.0);
+  byte = static_cast<unsigned char>(
+      std::isfinite(scaled) ? std::clamp(std::round(scaled), 0.0, 255.0) : 0.0);
+  return true;
+}
+
 inline bool parseLong(const std::string &token, long &value) {
   if (token.empty()) return false;
   char *end = nullptr;
@@ -168,9 +181,10 @@ inline bool parseLong(const std::string &token, long &value) {
   return errno == 0 && end == token.c_str() + token.size();
 }
 
-/// ASCII OFF (header OFF, COFF, NOFF, CNOFF, STOFF...: per-vertex extras after
-/// x y z and per-face colours after the indices are ignored). Binary and
-/// 4D/nD OFF are refused.
+/// ASCII OFF (header OFF, COFF, NOFF, CNOFF, STOFF...: per-vertex colours of a
+/// C header are read, 3 or 4 channels after x y z and the normal of an N
+/// header; other per-vertex extras and per-face colours after the indices are
+/// ignored). Binary and 4D/nD OFF are refused.
 inline PolygonMesh parseOff(const std::string &text) {
   auto fail = [](const std::string &why) { throw std::runtime_error("malformed OFF: " + why); };
   const std::vector<std::string> lines = contentLines(text);
@@ -179,7 +193,12 @@ inline PolygonMesh parseOff(const std::string &text) {
   std::istringstream header(lines[0]);
   std::string first;
   header >> first;
+  bool coloured = false, normals = false, texCoords = false;
   if (first.size() >= 3 && first.compare(first.size() - 3, 3, "OFF") == 0) {
+    const std::string prefix = first.substr(0, first.size() - 3);
+    coloured = prefix.find('C') != std::string::npos;
+    normals = prefix.find('N') != std::string::npos;
+    texCoords = prefix.find("ST") != std::string::npos;
     if (first.find('4') != std::string::npos || first.find('n') != std::string::npos)
       fail("only 3D OFF is supported");
     std::string rest;
@@ -204,6 +223,7 @@ inline PolygonMesh parseOff(const std::string &text) {
          " faces, the file has " + std::to_string(lines.size() - at) + " lines");
   PolygonMesh mesh;
   mesh.coords.reserve(3 * nv);
+  if (coloured) mesh.colors.assign(4 * std::size_t(nv), 255);
   for (long i = 0; i < nv; ++i, ++at) {
     std::istringstream in(lines[at]);
     std::string c[3];
@@ -212,6 +232,15 @@ inline PolygonMesh parseOff(const std::string &text) {
       if (!(in >> ci) || !readStlNumber(ci, value)) fail("bad vertex line " + std::to_string(i));
       mesh.coords.push_back(value);
     }
+    if (!coloured) continue;
+    std::vector<std::string> rest;
+    for (std::string tk; in >> tk;) rest.push_back(tk);
+    const std::size_t skip = normals ? 3 : 0, channels = rest.size() - skip - (texCoords ? 2 : 0);
+    if (rest.size() < skip + (texCoords ? 2 : 0) + 3 || channels > 4)
+      fail("vertex line " + std::to_string(i) + " has no colour");
+    for (std::size_t k = 0; k < channels; ++k)
+      if (!readColourChannel(rest[skip + k], mesh.colors[4 * std::size_t(i) + k]))
+        fail("bad colour on vertex line " + std::to_string(i));
   }
   for (long i = 0; i < nf; ++i, ++at) {
     std::istringstream in(lines[at]);
@@ -235,8 +264,10 @@ inline PolygonMesh parseOff(const std::string &text) {
 }
 
 /// OBJ: "v x y z [...]" and "f a b c ..." (a = v, v/t, v//n or v/t/n; negative
-/// = relative to the last vertex); other statements (vt, vn, g, o, s, usemtl,
-/// mtllib, l, ...) are ignored. An index out of range is an error.
+/// = relative to the last vertex); "v x y z r g b" gives the vertex a colour
+/// (the common extension; vertices without one are white); other statements
+/// (vt, vn, g, o, s, usemtl, mtllib, l, ...) are ignored. An index out of
+/// range is an error.
 inline PolygonMesh parseObj(const std::string &text) {
   auto fail = [](const std::string &why) { throw std::runtime_error("malformed OBJ: " + why); };
   PolygonMesh mesh;
@@ -255,6 +286,16 @@ inline PolygonMesh parseObj(const std::string &text) {
         if (!(in >> tk) || !readStlNumber(tk, value))
           fail("bad vertex statement on content line " + std::to_string(lineNo));
         mesh.coords.push_back(value);
+      }
+      std::string rgb[3], more;
+      unsigned char byte[3];
+      if (in >> rgb[0] >> rgb[1] >> rgb[2] && !(in >> more) && readColourChannel(rgb[0], byte[0]) &&
+          readColourChannel(rgb[1], byte[1]) && readColourChannel(rgb[2], byte[2])) {
+        const std::size_t v = mesh.coords.size() / 3 - 1;
+        if (mesh.colors.empty()) mesh.colors.assign(4 * v, 255);  // the vertices before: white
+        mesh.colors.insert(mesh.colors.end(), {byte[0], byte[1], byte[2], 255});
+      } else if (!mesh.colors.empty()) {
+        mesh.colors.insert(mesh.colors.end(), {255, 255, 255, 255});
       }
     } else if (kw == "f") {
       const std::size_t first = mesh.index.size();
@@ -664,8 +705,8 @@ void buildFromSoup(const StlSoup &soup, MeshType &m) {
 /// Polygons are triangulated as fans from their first vertex (all formats).
 /// Malformed files (truncated, garbage, indices out of range, empty) throw.
 /// \return what was read beside positions and faces, as a vcg::tri::io::Mask
-///         combination: IOM_VERTCOLOR for a PLY with vertex colours, else 0
-///         (the same mask makes saveMesh write them back).
+///         combination: IOM_VERTCOLOR for vertex colours (PLY, COFF, OBJ's
+///         "v x y z r g b"), else 0 (the same mask makes saveMesh write them).
 /// \throws std::runtime_error with a one-line message.
 template <class MeshType>
 int loadMesh(const std::string &path, MeshType &m) {
@@ -688,7 +729,10 @@ int loadMesh(const std::string &path, MeshType &m) {
     } else if (ext == "off" || ext == "obj") {
       std::ifstream file(path, std::ios::binary);
       const std::string text((std::istreambuf_iterator<char>(file)), {});
-      detail::buildFromPolygons(ext == "off" ? detail::parseOff(text) : detail::parseObj(text), m);
+      const detail::PolygonMesh polygons =
+          ext == "off" ? detail::parseOff(text) : detail::parseObj(text);
+      if (!polygons.colors.empty()) read |= vcg::tri::io::Mask::IOM_VERTCOLOR;
+      detail::buildFromPolygons(polygons, m);
     } else {
       std::ifstream file(path, std::ios::binary);
       const std::string bytes((std::istreambuf_iterator<char>(file)), {});

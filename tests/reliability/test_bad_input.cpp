@@ -327,6 +327,39 @@ TEST(ReliabilityUnusualInput, PlyFloatColoursAreReadAsBytes) {
   EXPECT_EQ(m.vert[2].cC(), vcg::Color4b(51, 51, 51, 255));
 }
 
+// Colours in the text formats: COFF (bytes, or floats after an N header's
+// normal), OBJ's "v x y z r g b" (vertices without one: white).
+TEST(ReliabilityUnusualInput, OffAndObjColoursAreRead) {
+  const fs::path dir = scratchDir("text-colours");
+  const std::string triangle = "3 0 1 2\n";
+  std::ofstream(dir / "bytes.off") << "COFF\n3 1 0\n0 0 0 255 128 0 255\n1 0 0 10 20 30\n"
+                                      "0 1 0 0 0 0 0\n"
+                                   << triangle;
+  std::ofstream(dir / "floats.off") << "CNOFF\n3 1 0\n0 0 0 0 0 1 1.0 0.5 0.0 1.0\n"
+                                       "1 0 0 0 0 1 0.2 0.2 0.2 1.0\n0 1 0 0 0 1 0 0 0 0.5\n"
+                                    << triangle;
+  std::ofstream(dir / "colours.obj") << "v 0 0 0\nv 1 0 0 1.0 0.5 0.0\nv 0 1 0 0.2 0.2 0.2\n"
+                                        "f 1 2 3\n";
+  const vcg::Color4b expected[3][3] = {
+      {vcg::Color4b(255, 128, 0, 255), vcg::Color4b(10, 20, 30, 255), vcg::Color4b(0, 0, 0, 0)},
+      {vcg::Color4b(255, 128, 0, 255), vcg::Color4b(51, 51, 51, 255), vcg::Color4b(0, 0, 0, 128)},
+      {vcg::Color4b(255, 255, 255, 255), vcg::Color4b(255, 128, 0, 255),
+       vcg::Color4b(51, 51, 51, 255)}};
+  const char *files[3] = {"bytes.off", "floats.off", "colours.obj"};
+  for (int k = 0; k < 3; ++k) {
+    es::Mesh m;
+    EXPECT_EQ(es::io::loadMesh((dir / files[k]).string(), m), vcg::tri::io::Mask::IOM_VERTCOLOR)
+        << files[k];
+    ASSERT_EQ(m.vn, 3) << files[k];
+    for (int v = 0; v < 3; ++v) EXPECT_EQ(m.vert[v].cC(), expected[k][v]) << files[k] << " " << v;
+  }
+  std::ofstream(dir / "plain.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n" << triangle;
+  std::ofstream(dir / "uncoloured.off") << "COFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n" << triangle;
+  es::Mesh m;
+  EXPECT_EQ(es::io::loadMesh((dir / "plain.off").string(), m), 0);
+  EXPECT_THROW(es::io::loadMesh((dir / "uncoloured.off").string(), m), std::runtime_error);
+}
+
 // The CLI refuses to write over its input, and leaves it intact.
 TEST(ReliabilityBadInput, CliNeverOverwritesItsInput) {
   const fs::path dir = scratchDir("overwrite");
