@@ -5,6 +5,7 @@
 //   plugin_test_tool make-lblock OUT.ply       sharp L-shaped block, rotated off the axes
 //   plugin_test_tool make-pointcloud OUT.ply   vertices only
 //   plugin_test_tool make-nonmanifold OUT.ply  three triangles on one edge
+//   plugin_test_tool paint-gradient IN OUT      IN with vertex colours varying along x and y
 //   plugin_test_tool info IN.ply               counts, colours, selection (key=value lines)
 //   plugin_test_tool compare A.ply B.ply [--rel-tol T] [--colors] [--vertex-colors] [--selection]
 //       same vertex and face count, same positions within T x bbox diagonal (default
@@ -119,10 +120,30 @@ int makeNonManifold(const std::string &out) {
   return save(m, out) ? 0 : 2;
 }
 
+/// IN with vertex colours that vary along x and y (blue 7, opaque): a
+/// coloured scan's stand-in.
+int paintGradient(const std::string &in, const std::string &out) {
+  Loaded a;
+  if (!load(in, a)) return 2;
+  const Coord lo = a.m.bbox.min, size = a.m.bbox.max - a.m.bbox.min;
+  for (auto &v : a.m.vert) {
+    const Coord t = v.P() - lo;
+    v.C() = vcg::Color4b(static_cast<unsigned char>(250 * t[0] / size[0]),
+                         static_cast<unsigned char>(250 * t[1] / size[1]), 7, 255);
+  }
+  if (vcg::tri::io::ExporterPLY<Mesh>::Save(a.m, out.c_str(), vcg::tri::io::Mask::IOM_VERTCOLOR,
+                                            false) != 0) {
+    std::cerr << "cannot write " << out << "\n";
+    return 2;
+  }
+  return 0;
+}
+
 int info(const std::string &path) {
   Loaded a;
   if (!load(path, a)) return 2;
-  std::size_t selected = 0;
+  std::size_t selected = 0, white = 0;
+  for (const auto &v : a.m.vert) white += v.cC() == vcg::Color4b(vcg::Color4b::White);
   std::set<unsigned> faceColours;
   for (const auto &f : a.m.face) {
     if (f.IsS()) ++selected;
@@ -134,7 +155,7 @@ int info(const std::string &path) {
             << "\nface_color=" << bool(a.mask & vcg::tri::io::Mask::IOM_FACECOLOR)
             << "\nface_flags=" << bool(a.mask & vcg::tri::io::Mask::IOM_FACEFLAGS)
             << "\nselected_faces=" << selected << "\nface_colors=" << faceColours.size()
-            << "\nbbox_diag=" << a.m.bbox.Diag() << "\n";
+            << "\nwhite_vertices=" << white << "\nbbox_diag=" << a.m.bbox.Diag() << "\n";
   return 0;
 }
 
@@ -250,6 +271,7 @@ int compare(const std::string &pa, const std::string &pb, double relTol, bool co
 
 int usage() {
   std::cerr << "usage: plugin_test_tool make-lblock|make-pointcloud|make-nonmanifold OUT\n"
+               "       plugin_test_tool paint-gradient IN OUT\n"
                "       plugin_test_tool info IN\n"
                "       plugin_test_tool compare A B [--rel-tol T] [--colors] [--vertex-colors] "
                "[--selection]\n";
@@ -264,6 +286,7 @@ int main(int argc, char **argv) {
   if (args.size() == 2 && args[0] == "make-pointcloud") return makePointCloud(args[1]);
   if (args.size() == 2 && args[0] == "make-nonmanifold") return makeNonManifold(args[1]);
   if (args.size() == 2 && args[0] == "info") return info(args[1]);
+  if (args.size() == 3 && args[0] == "paint-gradient") return paintGradient(args[1], args[2]);
   if (args.size() >= 3 && args[0] == "compare") {
     double tol = 1e-5;
     bool colours = false;
