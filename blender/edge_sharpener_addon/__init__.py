@@ -62,10 +62,43 @@ def mesh_arrays(mesh):
     return vertices.reshape(-1, 3), triangles.reshape(-1, 3)
 
 
+def point_colors(mesh):
+    """The mesh's colour attribute on points (the active one, else the first),
+    as (name, data type, RGBA floats as stored: sRGB for bytes), or None. The
+    voxel remesher keeps such an attribute with Preserve Color Attributes."""
+    attributes = [a for a in mesh.color_attributes if a.domain == "POINT"]
+    if not attributes:
+        return None
+    active = mesh.color_attributes.active_color
+    attribute = active if active is not None and active.domain == "POINT" else attributes[0]
+    values = np.empty(4 * len(mesh.vertices), dtype=np.float32)
+    key = "color_srgb" if attribute.data_type == "BYTE_COLOR" else "color"
+    attribute.data.foreach_get(key, values)
+    return attribute.name, attribute.data_type, values.reshape(-1, 4)
+
+
+def set_point_colors(mesh, name, data_type, values):
+    """Writes RGBA floats (sRGB for bytes) into a new point colour attribute."""
+    attribute = mesh.color_attributes.new(name, data_type, "POINT")
+    key = "color_srgb" if data_type == "BYTE_COLOR" else "color"
+    attribute.data.foreach_set(key, np.ascontiguousarray(values, dtype=np.float32).ravel())
+    mesh.color_attributes.active_color = attribute
+
+
+def sharpened_colors(colors, report):
+    """The output's point colours: the input's values on the original vertices
+    (they keep their index), each new vertex with the mean of the vertices it
+    was made between, as the package blends them (8 bits a channel)."""
+    blended = report["vertex_colors"].astype(np.float32) / 255.0
+    blended[: len(colors)] = colors
+    return blended
+
+
 def replace_geometry(mesh, vertices, faces, face_colors=None):
     """Replaces the mesh's geometry with this triangle mesh (UV maps and other
-    attributes do not survive: the triangles are new). Keeps smooth or flat
-    shading as the majority of the old faces had it."""
+    attributes do not survive: the triangles are new; the caller writes a point
+    colour attribute back). Keeps smooth or flat shading as the majority of the
+    old faces had it."""
     smooth = np.zeros(len(mesh.polygons), dtype=bool)
     mesh.polygons.foreach_get("use_smooth", smooth)
     use_smooth = bool(smooth.mean() > 0.5) if len(smooth) else False
@@ -113,6 +146,9 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
         try:
             vertices, faces = mesh_arrays(obj.data)
             options = {option["key"]: getattr(self, option["key"]) for option in _ordinary_options()}
+            kept = point_colors(obj.data)
+            if kept is not None:
+                options["vertex_colors"] = np.round(np.clip(kept[2], 0, 1) * 255).astype(np.uint8)
             try:
                 new_vertices, new_faces, report = es.sharpen(vertices, faces, **options)
             except es.InputError as error:
@@ -120,6 +156,8 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
                 return {"CANCELLED"}
             colors = report.get("colors", {}).get("faces")
             replace_geometry(obj.data, new_vertices, new_faces, colors)
+            if kept is not None and not self.colorize:
+                set_point_colors(obj.data, kept[0], kept[1], sharpened_colors(kept[2], report))
         finally:
             if in_edit_mode:
                 bpy.ops.object.mode_set(mode="EDIT")

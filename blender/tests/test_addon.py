@@ -135,6 +135,38 @@ print(f"refusal report: {message.strip()}")
 assert "Edge-Sharpener refused the mesh" in message and "non-manifold" in message, message
 assert len(bpy.data.objects["fan"].data.polygons) == 3
 
+# A point colour attribute (the voxel remesher keeps one with Preserve Color
+# Attributes) survives: the original vertices keep their colours, each new
+# vertex gets the mean of the vertices it was made between (blue is 7/255
+# everywhere, so on every new vertex too: never white).
+obj = new_object("painted", cube_vertices, cube_triangles)
+obj.data.remesh_voxel_size = 0.1
+obj.data.use_remesh_preserve_vertex_colors = True
+bpy.ops.object.voxel_remesh()
+mesh = bpy.data.objects["painted"].data
+if "paint" not in mesh.color_attributes:
+    mesh.color_attributes.new("paint", "BYTE_COLOR", "POINT")
+mesh.color_attributes.active_color = mesh.color_attributes["paint"]
+co = np.empty(3 * len(mesh.vertices), dtype=np.float32)
+mesh.vertices.foreach_get("co", co)
+x = co.reshape(-1, 3)[:, 0]
+paint = np.stack([np.round(250 * (x - x.min()) / np.ptp(x)) / 255, np.full_like(x, 100 / 255),
+                  np.full_like(x, 7 / 255), np.ones_like(x)], axis=1).astype(np.float32)
+mesh.color_attributes["paint"].data.foreach_set("color_srgb", paint.ravel())
+n = len(mesh.vertices)
+assert sharpen() == {"FINISHED"}
+mesh = bpy.data.objects["painted"].data
+assert len(mesh.vertices) > n, "nothing was sharpened"
+attribute = mesh.color_attributes["paint"]
+assert attribute.domain == "POINT" and attribute.data_type == "BYTE_COLOR"
+after = np.empty(4 * len(mesh.vertices), dtype=np.float32)
+attribute.data.foreach_get("color_srgb", after)
+after = np.round(after.reshape(-1, 4) * 255).astype(int)
+assert np.array_equal(after[:n], np.round(paint * 255).astype(int)), "original vertices recoloured"
+assert (after[n:, 1] == 100).all() and (after[n:, 2] == 7).all(), "a new vertex is not blended"
+assert after[n:, 0].min() < 60 and after[n:, 0].max() > 190, "the gradient did not come through"
+print(f"point colours: {n} -> {len(mesh.vertices)} vertices, all coloured")
+
 # colorize paints the labels into a colour attribute.
 obj = new_object("cube2", cube_vertices, cube_triangles)
 obj.data.remesh_voxel_size = 0.1
