@@ -142,7 +142,7 @@ int run(const CliOptions &cli) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   namespace mask = vcg::tri::io;
-  int saveMask = inputAttributes & mask::Mask::IOM_VERTCOLOR;  // a PLY's vertex colours
+  int saveMask = inputAttributes & mask::Mask::IOM_VERTCOLOR;  // the input's vertex colours
   if (opt.colorize) saveMask |= mask::Mask::IOM_VERTCOLOR | mask::Mask::IOM_FACECOLOR;
   if (cli.detectOnly) saveMask |= mask::Mask::IOM_FACEFLAGS;
   es::io::saveMesh(m, cli.output, saveMask);

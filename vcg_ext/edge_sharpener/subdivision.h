@@ -184,7 +184,7 @@ void blendSourceAttributes(MeshType &m, typename MeshType::VertexType &v,
                            const InsertedVertexSource &src) {
   const int n = src.originalCount;
   if (n <= 0) return;
-  const auto &source = [&](int i) -> const typename MeshType::VertexType & {
+  const auto source = [&](int i) -> const typename MeshType::VertexType & {
     return m.vert[src.original[std::size_t(i)]];
   };
   if (vcg::tri::HasPerVertexColor(m))
