@@ -179,7 +179,9 @@ int main(int argc, char **argv) {
   CliOptions cli;
   CLI::App app{
       "Edge-Sharpener: restores sharp edges and corners that uniform remeshing, marching cubes "
-      "or scanning cut into chamfers (Attene et al. 2003). Reads and writes PLY, OFF, OBJ, STL."};
+      "or scanning cut into chamfers (Attene et al. 2003). Reads and writes PLY, OFF, OBJ, STL; "
+      "vertex colours are kept, each new vertex with the mean colour of those it was made "
+      "between."};
   app.add_option("input", cli.input, "mesh to sharpen")->required()->check(CLI::ExistingFile);
   app.add_option("output", cli.output, "where to write the result")->required();
   addTableOptions(app, cli);
