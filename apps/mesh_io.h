@@ -160,16 +160,21 @@ inline std::vector<std::string> contentLines(const std::string &text) {
   return lines;
 }
 
-/// A colour channel of a text format as a byte: a float in [0, 1] (written
-/// with a point or an exponent) scaled by 255, else an integer byte; clamped
-/// to [0, 255], a non-finite value read as 0. False when `token` is no number.
+/// A colour channel read from a file as a byte: a float in [0, 1] scaled by
+/// 255, an integer taken as it is; rounded and clamped to [0, 255], a
+/// non-finite value read as 0.
+inline unsigned char colourByte(double value, bool isFloat) {
+  const double scaled = value * (isFloat ? 255.0 : 1.0);
+  return static_cast<unsigned char>(
+      std::isfinite(scaled) ? std::clamp(std::round(scaled), 0.0, 255.0) : 0.0);
+}
+
+/// A colour channel of a text format (colourByte): a float when written with
+/// a point or an exponent. False when `token` is no number.
 inline bool readColourChannel(const std::string &token, unsigned char &byte) {
   float value;
   if (!readStlNumber(token, value)) return false;
-  const bool isFloat = token.find_first_of(".eE") != std::string::npos;
-  const double scaled = double(value) * (isFloat ? 255.0 : 1.0);
-  byte = static_cast<unsigned char>(
-      std::isfinite(scaled) ? std::clamp(std::round(scaled), 0.0, 255.0) : 0.0);
+  byte = colourByte(value, token.find_first_of(".eE") != std::string::npos);
   return true;
 }
 
@@ -589,40 +594,33 @@ inline PolygonMesh readPly(const std::string &bytes) {
     if (e.name == "vertex") {
       if (haveVertices) fail("two vertex elements");
       haveVertices = true;
-      int axis[3] = {-1, -1, -1};
+      // Each property's role, found once: 0-2 the coordinate x, y, z; 3-6 the
+      // colour channel red, green, blue, alpha (bytes or floats in [0, 1]); -1 skipped.
+      static const char *const kRoles[7] = {"x", "y", "z", "red", "green", "blue", "alpha"};
+      std::vector<int> role(e.properties.size(), -1);
+      bool has[7] = {};
       for (std::size_t i = 0; i < e.properties.size(); ++i)
-        for (int c = 0; c < 3; ++c)
-          if (!e.properties[i].list && e.properties[i].name == std::string(1, char('x' + c)))
-            axis[c] = int(i);
-      if (e.count > 0 && (axis[0] < 0 || axis[1] < 0 || axis[2] < 0))
-        fail("vertex element without x, y, z");
+        for (int r = 0; r < 7; ++r)
+          if (!e.properties[i].list && e.properties[i].name == kRoles[r])
+            role[i] = r, has[r] = true;
+      if (e.count > 0 && !(has[0] && has[1] && has[2])) fail("vertex element without x, y, z");
       if (e.count >= 0xffffffffu) fail("too many vertices");
-      // Vertex colours: red, green, blue (alpha optional), bytes or floats in [0, 1].
-      int channel[4] = {-1, -1, -1, -1};
-      static const char *const kChannels[4] = {"red", "green", "blue", "alpha"};
-      for (std::size_t i = 0; i < e.properties.size(); ++i)
-        for (int c = 0; c < 4; ++c)
-          if (!e.properties[i].list && e.properties[i].name == kChannels[c]) channel[c] = int(i);
-      const bool coloured = channel[0] >= 0 && channel[1] >= 0 && channel[2] >= 0;
+      const bool coloured = has[3] && has[4] && has[5];
+      if (!coloured)
+        for (int &r : role) r = r >= 3 ? -1 : r;
       nv = long(e.count);
       mesh.coords.resize(3 * e.count);
       if (coloured) mesh.colors.assign(4 * e.count, 255);
       for (std::uint64_t v = 0; v < e.count; ++v)
         for (std::size_t i = 0; i < e.properties.size(); ++i) {
           const PlyProperty &p = e.properties[i];
-          const int c = int(i) == axis[0] ? 0 : int(i) == axis[1] ? 1 : int(i) == axis[2] ? 2 : -1;
-          int ch = -1;
-          for (int k = 0; k < 4 && coloured; ++k)
-            if (int(i) == channel[k]) ch = k;
-          if (c >= 0) {
-            mesh.coords[3 * v + c] = float(in.read(p.type, p.isFloat, p.isSigned));
-          } else if (ch >= 0) {
-            const double value = in.read(p.type, p.isFloat, p.isSigned) * (p.isFloat ? 255 : 1);
-            mesh.colors[4 * v + ch] = static_cast<unsigned char>(
-                std::isfinite(value) ? std::clamp(std::round(value), 0.0, 255.0) : 0.0);
-          } else {
+          if (role[i] < 0)
             in.skip(p);
-          }
+          else if (role[i] < 3)
+            mesh.coords[3 * v + role[i]] = float(in.read(p.type, p.isFloat, p.isSigned));
+          else
+            mesh.colors[4 * v + role[i] - 3] =
+                colourByte(in.read(p.type, p.isFloat, p.isSigned), p.isFloat);
         }
       continue;
     }
@@ -726,17 +724,12 @@ int loadMesh(const std::string &path, MeshType &m) {
     if (ext == "stl") {
       detail::buildFromSoup(detail::readStl(path), m);
       vcg::tri::Clean<MeshType>::RemoveDuplicateVertex(m, false);
-    } else if (ext == "off" || ext == "obj") {
-      std::ifstream file(path, std::ios::binary);
-      const std::string text((std::istreambuf_iterator<char>(file)), {});
-      const detail::PolygonMesh polygons =
-          ext == "off" ? detail::parseOff(text) : detail::parseObj(text);
-      if (!polygons.colors.empty()) read |= vcg::tri::io::Mask::IOM_VERTCOLOR;
-      detail::buildFromPolygons(polygons, m);
     } else {
       std::ifstream file(path, std::ios::binary);
       const std::string bytes((std::istreambuf_iterator<char>(file)), {});
-      const detail::PolygonMesh polygons = detail::readPly(bytes);
+      const detail::PolygonMesh polygons = ext == "off"   ? detail::parseOff(bytes)
+                                           : ext == "obj" ? detail::parseObj(bytes)
+                                                          : detail::readPly(bytes);
       if (!polygons.colors.empty()) read |= vcg::tri::io::Mask::IOM_VERTCOLOR;
       detail::buildFromPolygons(polygons, m);
     }

@@ -162,6 +162,16 @@ std::vector<std::uint8_t> checkVertexColors(const py::object &colors, py::ssize_
   return rgba;
 }
 
+/// The vertices' colours as (n, 4) uint8 RGBA rows.
+template <class MeshType>
+py::array_t<std::uint8_t> vertexColourRows(const MeshType &m) {
+  py::array_t<std::uint8_t> rows({py::ssize_t(m.vert.size()), py::ssize_t(4)});
+  auto out = rows.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < m.vert.size(); ++i)
+    for (int c = 0; c < 4; ++c) out(i, c) = m.vert[i].cC()[c];
+  return rows;
+}
+
 template <class MeshType>
 py::tuple meshArrays(const MeshType &m) {
   using Scalar = typename MeshType::ScalarType;
@@ -415,27 +425,17 @@ py::tuple sharpenAs(const py::array &vertices, const py::array &faces, const py:
   if (opt.colorize) {
     // The colours are the labels painted (colorize.h): returned as RGBA rows.
     py::array_t<std::uint8_t> faceColors({py::ssize_t(m.face.size()), py::ssize_t(4)});
-    py::array_t<std::uint8_t> vertexColors({py::ssize_t(m.vert.size()), py::ssize_t(4)});
     auto fc = faceColors.mutable_unchecked<2>();
-    auto vc = vertexColors.mutable_unchecked<2>();
     for (std::size_t i = 0; i < m.face.size(); ++i)
       for (int c = 0; c < 4; ++c) fc(i, c) = m.face[i].cC()[c];
-    for (std::size_t i = 0; i < m.vert.size(); ++i)
-      for (int c = 0; c < 4; ++c) vc(i, c) = m.vert[i].cC()[c];
     py::dict colors;
     colors["faces"] = faceColors;
-    colors["vertices"] = vertexColors;
+    colors["vertices"] = vertexColourRows(m);
     reportDict["colors"] = colors;
   }
-  if (!rgba.empty()) {
-    // Each new vertex took the mean colour of the vertices it was made
-    // between (subdivide()); colorize paints over them.
-    py::array_t<std::uint8_t> out({py::ssize_t(m.vert.size()), py::ssize_t(4)});
-    auto vc = out.mutable_unchecked<2>();
-    for (std::size_t i = 0; i < m.vert.size(); ++i)
-      for (int c = 0; c < 4; ++c) vc(i, c) = m.vert[i].cC()[c];
-    reportDict["vertex_colors"] = out;
-  }
+  // Each new vertex took the mean colour of the vertices it was made between
+  // (subdivide()); colorize paints over them.
+  if (!rgba.empty()) reportDict["vertex_colors"] = vertexColourRows(m);
   const py::tuple out = meshArrays(m);
   return py::make_tuple(out[0], out[1], reportDict);
 }
