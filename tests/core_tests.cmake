@@ -6,7 +6,7 @@ edge_sharpener_test(core_tests test_geometry.cpp test_filters.cpp test_subdivisi
                     test_feature_evidence.cpp test_surface_measures.cpp test_planar_folds.cpp)
 target_link_libraries(core_tests PRIVATE test_meshes)  # IntersectionGuard.BoxOverlapMatchesEveryPairTest
 if(TARGET test_meshes AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/test_sharpen_shapes.cpp)
-  edge_sharpener_test(sharpen_shapes_tests test_sharpen_shapes.cpp)
+  edge_sharpener_test(sharpen_shapes_tests test_sharpen_shapes.cpp test_restored_edges.cpp)
   target_link_libraries(sharpen_shapes_tests PRIVATE test_meshes)
 endif()
 edge_sharpener_test(determinism_tests test_determinism.cpp)

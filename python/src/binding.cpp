@@ -18,6 +18,7 @@
 
 #include "edge_sharpener/edge_sharpener.h"
 #include "edge_sharpener/option_table.h"
+#include "edge_sharpener/restored_edges.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "mesh_distance.h"
 #include "report_json.h"
@@ -170,6 +171,28 @@ py::array_t<std::uint8_t> vertexColourRows(const MeshType &m) {
   for (std::size_t i = 0; i < m.vert.size(); ++i)
     for (int c = 0; c < 4; ++c) out(i, c) = m.vert[i].cC()[c];
   return rows;
+}
+
+/// The restored sharp edges (restored_edges.h) as the report's
+/// "restored_vertices" (int64 indices) and "sharp_edges" ((k, 2) int64, the
+/// faces' index type), from the attribute sharpen() filled.
+template <class MeshType>
+void reportRestoredEdges(MeshType &m, py::dict &report) {
+  auto handle = vcg::tri::Allocator<MeshType>::template FindPerVertexAttribute<std::uint8_t>(
+      m, es::kRestoredVertexAttribute);
+  std::vector<std::uint8_t> restored(m.vert.size());
+  std::vector<std::int64_t> indices;
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    if ((restored[v] = handle[v])) indices.push_back(std::int64_t(v));
+  vcg::tri::Allocator<MeshType>::DeletePerVertexAttribute(m, handle);
+  const auto edges = es::restoredEdges(m, restored);
+  py::array_t<std::int64_t> vertexArray(py::ssize_t(indices.size()));
+  std::copy(indices.begin(), indices.end(), vertexArray.mutable_data());
+  py::array_t<std::int64_t> edgeArray({py::ssize_t(edges.size()), py::ssize_t(2)});
+  std::int64_t *out = edgeArray.mutable_data();
+  for (const auto &[a, b] : edges) *out++ = a, *out++ = b;
+  report["restored_vertices"] = vertexArray;
+  report["sharp_edges"] = edgeArray;
 }
 
 template <class MeshType>
@@ -413,6 +436,8 @@ py::tuple sharpenAs(const py::array &vertices, const py::array &faces, const py:
   buildMesh(arrays, m);
   for (std::size_t i = 0; 4 * i < rgba.size(); ++i)
     m.vert[i].C() = vcg::Color4b(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2], rgba[4 * i + 3]);
+  vcg::tri::Allocator<MeshType>::template AddPerVertexAttribute<std::uint8_t>(
+      m, es::kRestoredVertexAttribute);
   es::SharpenReport report;
   const auto start = std::chrono::steady_clock::now();
   runWithoutGil(progress, opt, [&] { report = es::sharpen(m, opt); });
@@ -436,6 +461,7 @@ py::tuple sharpenAs(const py::array &vertices, const py::array &faces, const py:
   // Each new vertex took the mean colour of the vertices it was made between
   // (subdivide()); colorize paints over them.
   if (!rgba.empty()) reportDict["vertex_colors"] = vertexColourRows(m);
+  reportRestoredEdges(m, reportDict);
   const py::tuple out = meshArrays(m);
   return py::make_tuple(out[0], out[1], reportDict);
 }
@@ -619,7 +645,10 @@ PYBIND11_MODULE(_edge_sharpener, m) {
           "of integers in [0, 255] or floats in [0, 1], gives the input's colours: the report "
           "then holds 'vertex_colors', (n', 4) uint8 RGBA, each new vertex with the mean "
           "colour of the vertices it was made between (with colorize=True, the labels' "
-          "colours).",
+          "colours). The report's 'restored_vertices' (int64) are the output vertices placed "
+          "on a sharp edge or corner, and 'sharp_edges' ((k, 2) int64) the output edges "
+          "joining two of them: the restored feature lines (to mark sharp for shading, or "
+          "select).",
           "") +
       "\n" + arraysDoc + options;
   static const std::string detectDoc =

@@ -317,3 +317,24 @@ def test_vertex_colors_follow_the_vertices(cube):
 def test_bad_vertex_colors_are_refused(colors, message):
     with pytest.raises(es.InputError, match=message.replace("[", r"\[").replace("]", r"\]")):
         es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F, vertex_colors=colors)
+
+
+def test_sharp_edges_are_the_restored_feature_lines(cube):
+    """The report's restored vertices lie on the cube's edges (two coordinates
+    on its faces), its sharp edges are output edges joining two of them along
+    one cube edge, and together they run the twelve unit edges' length. A
+    mesh with nothing to restore (the octahedron, already sharp) has none."""
+    vertices, faces, report = es.sharpen(*cube)
+    restored, edges = report["restored_vertices"], report["sharp_edges"]
+    assert restored.dtype == np.int64 and edges.dtype == np.int64 and edges.shape[1] == 2
+    assert len(restored) == report["placement"]["moved"] > 0
+    on_faces = np.abs(np.abs(vertices) - 0.5) < 0.005  # a seventh of a cell
+    assert (on_faces[restored].sum(axis=1) >= 2).all()
+    assert np.isin(edges, restored).all() and (edges[:, 0] < edges[:, 1]).all()
+    face_edges = {tuple(sorted(e)) for f in faces for e in ((f[0], f[1]), (f[1], f[2]), (f[2], f[0]))}
+    assert all(tuple(e) in face_edges for e in edges)
+    assert ((on_faces[edges[:, 0]] & on_faces[edges[:, 1]]).sum(axis=1) >= 2).all()
+    length = np.linalg.norm(vertices[edges[:, 0]] - vertices[edges[:, 1]], axis=1).sum()
+    assert 0.9 * 12 < length < 12.01
+    none = es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F)[2]
+    assert none["restored_vertices"].shape == (0,) and none["sharp_edges"].shape == (0, 2)

@@ -38,6 +38,9 @@ def test_sharpen_matches_cli(name, options, cli, tmp_path):
     for field in RUN_FIELDS:
         cli_report.pop(field, None)
     assert report.pop("seconds") >= 0
+    # Beyond the CLI's report: the restored vertices (those the report counts as moved).
+    assert len(report.pop("restored_vertices")) == report["placement"]["moved"]
+    assert report.pop("sharp_edges").shape[1] == 2
     assert report == cli_report
     assert report["output"] == {"vertices": len(vertices), "faces": len(faces)}
 

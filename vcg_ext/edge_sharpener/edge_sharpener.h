@@ -36,6 +36,8 @@ std::string findInputProblem(MeshType &m);
 ///      with opt.colorize also per-face and per-vertex colour.
 /// \return counts of every stage. Original vertices keep their index and
 ///         bit-identical position; inserted vertices are appended after them.
+///         Where m has the per-vertex attribute kRestoredVertexAttribute
+///         (restored_edges.h), it marks the vertices placed on sharp edges.
 /// \throws InputError (mesh untouched) when findInputProblem() reports a problem.
 template <class MeshType>
 SharpenReport sharpen(MeshType &m, const SharpenOptions &opt = {});

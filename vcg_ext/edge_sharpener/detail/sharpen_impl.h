@@ -22,6 +22,7 @@
 #include "../guards/vertex_moves.h"
 #include "../option_table.h"
 #include "../placement.h"
+#include "../restored_edges.h"
 #include "../smooth_edges.h"
 #include "../subdivision.h"
 #include "../util/fast_topology.h"
@@ -136,11 +137,13 @@ void updateOutputNormals(MeshType &m) {
     if (writable(m.vert[vi])) m.vert[vi].N().Normalize();
 }
 
-/// Colours (inspection only), compact vectors, normals, output counts.
+/// Colours (inspection only), the restored vertices (if asked for),
+/// compact vectors, normals, output counts.
 template <class MeshType>
 void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
             SharpenReport &report) {
   if (opt.colorize) colorize(m, labels);
+  recordRestoredVertices(m, labels);
   vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
   updateOutputNormals(m);
   report.outputVertices = m.vert.size();
