@@ -16,6 +16,8 @@ bl_info = {
     "category": "Mesh",
 }
 
+import math
+
 import bpy
 import numpy as np
 
@@ -120,6 +122,35 @@ def replace_geometry(mesh, vertices, faces, face_colors=None):
         layer.data.foreach_set("color", corner_colors.ravel())
 
 
+def mark_sharp_edges(mesh, pairs):
+    """Marks the mesh's edges joining each vertex pair of `pairs` (the report's
+    sharp_edges: the restored feature lines) sharp, so that smooth shading
+    keeps them crisp. On Blender 3.x, where that takes Auto Smooth, a smooth
+    mesh without it gets it at 180 degrees (only the marked edges split).
+    Returns the number of edges marked."""
+    if len(pairs) == 0 or len(mesh.edges) == 0:
+        return 0
+    ends = np.empty(2 * len(mesh.edges), dtype=np.int64)
+    mesh.edges.foreach_get("vertices", ends)
+    ends = np.sort(ends.reshape(-1, 2), axis=1)
+    n = len(mesh.vertices)
+    sharp = np.isin(ends[:, 0] * n + ends[:, 1], pairs[:, 0] * n + pairs[:, 1])
+    if "use_edge_sharp" in bpy.types.MeshEdge.bl_rna.properties:  # Blender 3.x
+        flags = np.zeros(len(mesh.edges), dtype=bool)
+        mesh.edges.foreach_get("use_edge_sharp", flags)
+        mesh.edges.foreach_set("use_edge_sharp", flags | sharp)
+    else:  # Blender 4: a boolean edge attribute
+        attribute = mesh.attributes.get("sharp_edge") or mesh.attributes.new("sharp_edge", "BOOLEAN", "EDGE")
+        flags = np.zeros(len(mesh.edges), dtype=bool)
+        attribute.data.foreach_get("value", flags)
+        attribute.data.foreach_set("value", flags | sharp)
+    if hasattr(mesh, "use_auto_smooth") and not mesh.use_auto_smooth and len(mesh.polygons) and \
+            mesh.polygons[0].use_smooth:
+        mesh.use_auto_smooth = True
+        mesh.auto_smooth_angle = math.pi
+    return int(sharp.sum())
+
+
 class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
     """Restore the sharp edges and corners that voxel remeshing cut into chamfers"""
 
@@ -129,6 +160,11 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
 
     # One property per ordinary option of the table (set before registering).
     __annotations__ = {option["key"]: _property(option) for option in _ordinary_options()}
+    # The add-on's own: what it does with the restored edges (mark_sharp_edges).
+    __annotations__["mark_sharp"] = bpy.props.BoolProperty(
+        name="Mark Sharp", default=True,
+        description="Mark the restored edges sharp, so that smooth shading keeps them crisp "
+                    "(Blender 3.x: turns on Auto Smooth at 180 degrees on a smooth mesh without it)")
 
     @classmethod
     def poll(cls, context):
@@ -158,12 +194,14 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
             replace_geometry(obj.data, new_vertices, new_faces, colors)
             if kept is not None and not self.colorize:
                 set_point_colors(obj.data, kept[0], kept[1], sharpened_colors(kept[2], report))
+            marked = mark_sharp_edges(obj.data, report["sharp_edges"]) if self.mark_sharp else 0
         finally:
             if in_edit_mode:
                 bpy.ops.object.mode_set(mode="EDIT")
         placement = report["placement"]
         self.report({"INFO"}, f"Edge-Sharpener: {placement['moved']} vertices moved onto sharp edges "
-                              f"({placement['fallbacks']} kept), {len(faces)} -> {len(new_faces)} triangles")
+                              f"({placement['fallbacks']} kept), {len(faces)} -> {len(new_faces)} triangles"
+                              + (f", {marked} edges marked sharp" if marked else ""))
         return {"FINISHED"}
 
 

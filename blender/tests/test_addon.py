@@ -49,7 +49,7 @@ for menu in ("VIEW3D_MT_edit_mesh_clean", "VIEW3D_MT_object_cleanup"):
     assert addon._menu_entry in getattr(bpy.types, menu).draw._draw_funcs, menu
 panel = {p.identifier for p in bpy.ops.mesh.sharpen_chamfered_edges.get_rna_type().properties
          if p.identifier != "rna_type"}
-assert panel == {o["key"] for o in es.ordinary_options()}, panel
+assert panel == {o["key"] for o in es.ordinary_options()} | {"mark_sharp"}, panel
 
 
 def new_object(name, vertices, faces):
@@ -173,4 +173,46 @@ obj.data.remesh_voxel_size = 0.1
 bpy.ops.object.voxel_remesh()
 assert sharpen(colorize=True) == {"FINISHED"}
 assert "Edge-Sharpener labels" in bpy.data.objects["cube2"].data.color_attributes
+
+# The restored edges are marked sharp (Mark Sharp, on by default), and a
+# smooth-shaded mesh gets Auto Smooth at 180 degrees: they are the turned
+# cube's twelve edges (side 2), and only they.
+def cube_edge_distance(points):
+    """Each point's distance to the nearest of the turned cube's 12 edges."""
+    best = np.full(len(points), np.inf)
+    for i in range(8):
+        for j in range(i + 1, 8):
+            if np.count_nonzero(corners[i] != corners[j]) != 1:
+                continue
+            p, q = cube_vertices[i], cube_vertices[j]
+            t = np.clip((points - p) @ (q - p) / ((q - p) @ (q - p)), 0, 1)
+            best = np.minimum(best, np.linalg.norm(points - (p + t[:, None] * (q - p)), axis=1))
+    return best
+
+
+for mark in (True, False):
+    obj = new_object("smooth", cube_vertices, cube_triangles)
+    obj.data.remesh_voxel_size = 0.1
+    bpy.ops.object.voxel_remesh()
+    bpy.ops.object.shade_smooth()
+    assert sharpen(mark_sharp=mark) == {"FINISHED"}
+    mesh = bpy.data.objects["smooth"].data
+    flags = np.zeros(len(mesh.edges), dtype=bool)
+    mesh.edges.foreach_get("use_edge_sharp", flags)
+    ends = np.empty(2 * len(mesh.edges), dtype=np.int64)
+    mesh.edges.foreach_get("vertices", ends)
+    co = np.empty(3 * len(mesh.vertices), dtype=np.float32)
+    mesh.vertices.foreach_get("co", co)
+    co, ends = co.reshape(-1, 3).astype(float), ends.reshape(-1, 2)[flags]
+    if not mark:
+        assert not flags.any() and not mesh.use_auto_smooth
+        break
+    length = np.linalg.norm(co[ends[:, 0]] - co[ends[:, 1]], axis=1).sum()
+    off = cube_edge_distance(co[ends.ravel()]).max()
+    print(f"marked sharp: {len(ends)} edges, {length:.3f} long (the cube's edges: 24), "
+          f"at most {off:.4f} off them")
+    assert 0.9 * 24 < length < 24.01 and off < 0.02, (length, off)
+    assert mesh.use_auto_smooth and abs(mesh.auto_smooth_angle - math.pi) < 1e-6
+    bpy.data.objects.remove(bpy.data.objects["smooth"])
+
 print("blender add-on test: all checks passed")
