@@ -1130,7 +1130,26 @@ def default_section(results):
           "remnant regions smaller than one sample spacing also restored the sixth corner "
           "(lblock_tilted by Screened Poisson max 0.862% -> 0.819%, where its concave edge "
           "then holds the max) but made octa-flower17k by UMR 1% at multiplier 1.5 worse "
-          "(1.065% -> 1.338%, a petal's tip) on the tuning half: not taken further.", ""]
+          "(1.065% -> 1.338%, a petal's tip) on the tuning half: not taken further.", "",
+          "**Blend gates per feature** (studied on 2026-11-29 on the tuning half only, not "
+          "adopted). The fillet that makes plate_holes by vdbproj 1% worse (radius 1.7 cells) "
+          "is also the one held-out tools square off (scikit-image's marching cubes, "
+          "Blender's QuadriFlow and voxel remesh: `docs/heldout-skimage.md`, "
+          "`docs/heldout-blender.md`). Two gates were weighed over the tuning half's kept "
+          "edge features (`bench/study/blend_gates.py` on `evidence_study.py --half tuning` "
+          "and `--sources`; a feature's harm or gain is the summed change of its moved "
+          "vertices' distance to the reference, in sample spacings). A feature's median "
+          "roundness (a moved vertex's farther source: its distance from its plane over its "
+          "distance from the target; 0 on a plane, up to sin 45 degrees on a circular blend) "
+          "over 0.3-0.6 sends back 236-1982 of harm but gives up 4079-9992 of gain: OpenVDB's "
+          "own chamfers are as round (a dual vertex half a cell off both faces lies on the "
+          "fillet of radius 1.7 cells that touches them). Its share of blend-like sources "
+          "(0.15 spacings or more off their plane and 1.5 times as far from the other "
+          "flank's) from 0.2 to 0.7 sends back 210-1309 and gives up 197-4552 (Screened "
+          "Poisson and OpenVDB edges of cylinder_block and ADIS16480, whose reconstruction "
+          "rounds a sharp edge as a fillet is round); where the two balance (0.6 and above) it "
+          "reaches only 165-184 of plate_holes' 456. A fillet under two cells in radius and a "
+          "sampler's rounding of a sharp edge leave the same samples: no gate was made.", ""]
     return L
 
 
