@@ -34,6 +34,8 @@ std::vector<std::uint8_t> sharpenRecordingRestored(const std::string &name, doub
   std::size_t count = 0;
   for (std::size_t v = 0; v < m.vert.size(); ++v) count += restored[v] = h[v];
   EXPECT_EQ(count, report.placement.moved());  // every vertex the report counts as moved
+  // A persistent attribute is the caller's to delete (vcglib's mesh does not).
+  vcg::tri::Allocator<es::Mesh>::DeletePerVertexAttribute(m, h);
   return restored;
 }
 

@@ -173,27 +173,40 @@ py::array_t<std::uint8_t> vertexColourRows(const MeshType &m) {
   return rows;
 }
 
-/// The restored sharp edges (restored_edges.h) as the report's
-/// "restored_vertices" (int64 indices) and "sharp_edges" ((k, 2) int64, the
-/// faces' index type), from the attribute sharpen() filled.
+/// The attribute sharpen() records the restored vertices in
+/// (restored_edges.h), added for one call and deleted however it ends.
 template <class MeshType>
-void reportRestoredEdges(MeshType &m, py::dict &report) {
-  auto handle = vcg::tri::Allocator<MeshType>::template FindPerVertexAttribute<std::uint8_t>(
-      m, es::kRestoredVertexAttribute);
-  std::vector<std::uint8_t> restored(m.vert.size());
-  std::vector<std::int64_t> indices;
-  for (std::size_t v = 0; v < m.vert.size(); ++v)
-    if ((restored[v] = handle[v])) indices.push_back(std::int64_t(v));
-  vcg::tri::Allocator<MeshType>::DeletePerVertexAttribute(m, handle);
-  const auto edges = es::restoredEdges(m, restored);
-  py::array_t<std::int64_t> vertexArray(py::ssize_t(indices.size()));
-  std::copy(indices.begin(), indices.end(), vertexArray.mutable_data());
-  py::array_t<std::int64_t> edgeArray({py::ssize_t(edges.size()), py::ssize_t(2)});
-  std::int64_t *out = edgeArray.mutable_data();
-  for (const auto &[a, b] : edges) *out++ = a, *out++ = b;
-  report["restored_vertices"] = vertexArray;
-  report["sharp_edges"] = edgeArray;
-}
+class RestoredVertices {
+ public:
+  explicit RestoredVertices(MeshType &m)
+      : m_(m),
+        h_(vcg::tri::Allocator<MeshType>::template AddPerVertexAttribute<std::uint8_t>(
+            m, es::kRestoredVertexAttribute)) {}
+  ~RestoredVertices() { vcg::tri::Allocator<MeshType>::DeletePerVertexAttribute(m_, h_); }
+  RestoredVertices(const RestoredVertices &) = delete;
+  RestoredVertices &operator=(const RestoredVertices &) = delete;
+
+  /// Into the report: "restored_vertices" (int64 indices) and "sharp_edges"
+  /// ((k, 2) int64, the faces' index type), the edges joining two of them.
+  void report(py::dict &out) {
+    std::vector<std::uint8_t> restored(m_.vert.size());
+    std::vector<std::int64_t> indices;
+    for (std::size_t v = 0; v < m_.vert.size(); ++v)
+      if ((restored[v] = h_[v])) indices.push_back(std::int64_t(v));
+    const auto edges = es::restoredEdges(m_, restored);
+    py::array_t<std::int64_t> vertexArray(py::ssize_t(indices.size()));
+    std::copy(indices.begin(), indices.end(), vertexArray.mutable_data());
+    py::array_t<std::int64_t> edgeArray({py::ssize_t(edges.size()), py::ssize_t(2)});
+    std::int64_t *e = edgeArray.mutable_data();
+    for (const auto &[a, b] : edges) *e++ = a, *e++ = b;
+    out["restored_vertices"] = vertexArray;
+    out["sharp_edges"] = edgeArray;
+  }
+
+ private:
+  MeshType &m_;
+  typename MeshType::template PerVertexAttributeHandle<std::uint8_t> h_;
+};
 
 template <class MeshType>
 py::tuple meshArrays(const MeshType &m) {
@@ -436,8 +449,7 @@ py::tuple sharpenAs(const py::array &vertices, const py::array &faces, const py:
   buildMesh(arrays, m);
   for (std::size_t i = 0; 4 * i < rgba.size(); ++i)
     m.vert[i].C() = vcg::Color4b(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2], rgba[4 * i + 3]);
-  vcg::tri::Allocator<MeshType>::template AddPerVertexAttribute<std::uint8_t>(
-      m, es::kRestoredVertexAttribute);
+  RestoredVertices<MeshType> restored(m);
   es::SharpenReport report;
   const auto start = std::chrono::steady_clock::now();
   runWithoutGil(progress, opt, [&] { report = es::sharpen(m, opt); });
@@ -461,7 +473,7 @@ py::tuple sharpenAs(const py::array &vertices, const py::array &faces, const py:
   // Each new vertex took the mean colour of the vertices it was made between
   // (subdivide()); colorize paints over them.
   if (!rgba.empty()) reportDict["vertex_colors"] = vertexColourRows(m);
-  reportRestoredEdges(m, reportDict);
+  restored.report(reportDict);
   const py::tuple out = meshArrays(m);
   return py::make_tuple(out[0], out[1], reportDict);
 }

@@ -18,7 +18,8 @@ namespace edge_sharpener {
 
 /// The per-vertex attribute (std::uint8_t) sharpen() fills when the caller
 /// has added it: 1 on each output vertex placed on a sharp edge or corner,
-/// else 0. Without it nothing is recorded.
+/// else 0. Without it nothing is recorded. The caller deletes it
+/// (Allocator::DeletePerVertexAttribute): vcglib's mesh does not.
 inline constexpr const char *kRestoredVertexAttribute = "edge_sharpener_restored";
 
 namespace detail {
