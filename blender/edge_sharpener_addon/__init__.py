@@ -99,8 +99,8 @@ def sharpened_colors(colors, report):
 def replace_geometry(mesh, vertices, faces, face_colors=None):
     """Replaces the mesh's geometry with this triangle mesh (UV maps and other
     attributes do not survive: the triangles are new; the caller writes a point
-    colour attribute back). Keeps smooth or flat shading as the majority of the
-    old faces had it."""
+    colour attribute and the edge marks back). Keeps smooth or flat shading as the
+    majority of the old faces had it."""
     smooth = np.zeros(len(mesh.polygons), dtype=bool)
     mesh.polygons.foreach_get("use_smooth", smooth)
     use_smooth = bool(smooth.mean() > 0.5) if len(smooth) else False
@@ -122,6 +122,70 @@ def replace_geometry(mesh, vertices, faces, face_colors=None):
         layer.data.foreach_set("color", corner_colors.ravel())
 
 
+# Per-edge marks a user sets (sharp, seam, crease): an edge property on Blender
+# 3.x, a named edge attribute on Blender 4 where the property went away.
+_EDGE_MARKS = (("use_edge_sharp", "sharp_edge", bool), ("use_seam", None, bool),
+               ("crease", "crease_edge", np.float32))
+
+
+def _edge_ends(mesh):
+    """Each edge's two vertex indices, lower first, as one int64 key per edge."""
+    ends = np.empty(2 * len(mesh.edges), dtype=np.int64)
+    mesh.edges.foreach_get("vertices", ends)
+    ends = np.sort(ends.reshape(-1, 2), axis=1)
+    return ends[:, 0] * (len(mesh.vertices) + 1) + ends[:, 1], ends
+
+
+def _edge_values(mesh, prop, attribute, dtype, values=None):
+    """Reads (values None) or writes one mark on every edge; None where the mesh has no
+    such mark."""
+    if prop in bpy.types.MeshEdge.bl_rna.properties:
+        target, key = mesh.edges, prop
+    elif attribute is not None and (attribute in mesh.attributes or values is not None):
+        layer = mesh.attributes.get(attribute)
+        if layer is None:
+            layer = mesh.attributes.new(attribute, "BOOLEAN" if dtype is bool else "FLOAT", "EDGE")
+        target, key = layer.data, "value"
+    else:
+        return None
+    if values is None:
+        values = np.zeros(len(mesh.edges), dtype=dtype)
+        target.foreach_get(key, values)
+        return values
+    target.foreach_set(key, values)
+    return values
+
+
+def edge_marks(mesh):
+    """The marked edges (sharp, seam, crease) as (vertex pairs, {mark: values}), for
+    keep_edge_marks: the original vertices keep their index through sharpening."""
+    _, ends = _edge_ends(mesh)
+    marks = {}
+    for prop, attribute, dtype in _EDGE_MARKS:
+        values = _edge_values(mesh, prop, attribute, dtype)
+        if values is not None and values.any():
+            marks[(prop, attribute, dtype)] = values
+    return ends, marks
+
+
+def keep_edge_marks(mesh, kept):
+    """Writes the marks `kept` (edge_marks of the input) back on the edges that are
+    still there, between the same two vertices; an edge sharpening split is gone."""
+    ends, marks = kept
+    if not marks:
+        return
+    keys, _ = _edge_ends(mesh)
+    old_keys = ends[:, 0] * (len(mesh.vertices) + 1) + ends[:, 1]
+    order = np.argsort(old_keys)
+    where = np.searchsorted(old_keys[order], keys)
+    found = where < len(old_keys)
+    found[found] = old_keys[order][where[found]] == keys[found]
+    for (prop, attribute, dtype), old in marks.items():
+        values = np.zeros(len(keys), dtype=dtype)
+        values[found] = old[order][where[found]]
+        _edge_values(mesh, prop, attribute, dtype, values)
+
+
 def mark_sharp_edges(mesh, pairs):
     """Marks the mesh's edges joining each vertex pair of `pairs` (the report's
     sharp_edges: the restored feature lines) sharp, so that smooth shading
@@ -130,20 +194,11 @@ def mark_sharp_edges(mesh, pairs):
     Returns the number of edges marked."""
     if len(pairs) == 0 or len(mesh.edges) == 0:
         return 0
-    ends = np.empty(2 * len(mesh.edges), dtype=np.int64)
-    mesh.edges.foreach_get("vertices", ends)
-    ends = np.sort(ends.reshape(-1, 2), axis=1)
-    n = len(mesh.vertices)
-    sharp = np.isin(ends[:, 0] * n + ends[:, 1], pairs[:, 0] * n + pairs[:, 1])
-    if "use_edge_sharp" in bpy.types.MeshEdge.bl_rna.properties:  # Blender 3.x
-        flags = np.zeros(len(mesh.edges), dtype=bool)
-        mesh.edges.foreach_get("use_edge_sharp", flags)
-        mesh.edges.foreach_set("use_edge_sharp", flags | sharp)
-    else:  # Blender 4: a boolean edge attribute
-        attribute = mesh.attributes.get("sharp_edge") or mesh.attributes.new("sharp_edge", "BOOLEAN", "EDGE")
-        flags = np.zeros(len(mesh.edges), dtype=bool)
-        attribute.data.foreach_get("value", flags)
-        attribute.data.foreach_set("value", flags | sharp)
+    keys, _ = _edge_ends(mesh)
+    n = len(mesh.vertices) + 1
+    sharp = np.isin(keys, pairs[:, 0] * n + pairs[:, 1])
+    marked = _edge_values(mesh, "use_edge_sharp", "sharp_edge", bool)
+    _edge_values(mesh, "use_edge_sharp", "sharp_edge", bool, sharp if marked is None else marked | sharp)
     if hasattr(mesh, "use_auto_smooth") and not mesh.use_auto_smooth and len(mesh.polygons) and \
             mesh.polygons[0].use_smooth:
         mesh.use_auto_smooth = True
@@ -183,6 +238,7 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
             vertices, faces = mesh_arrays(obj.data)
             options = {option["key"]: getattr(self, option["key"]) for option in _ordinary_options()}
             kept = point_colors(obj.data)
+            marks = edge_marks(obj.data)
             if kept is not None:
                 options["vertex_colors"] = np.round(np.clip(kept[2], 0, 1) * 255).astype(np.uint8)
             try:
@@ -192,6 +248,7 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
                 return {"CANCELLED"}
             colors = report.get("colors", {}).get("faces")
             replace_geometry(obj.data, new_vertices, new_faces, colors)
+            keep_edge_marks(obj.data, marks)
             if kept is not None and not self.colorize:
                 set_point_colors(obj.data, kept[0], kept[1], sharpened_colors(kept[2], report))
             marked = mark_sharp_edges(obj.data, report["sharp_edges"]) if self.mark_sharp else 0

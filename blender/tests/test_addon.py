@@ -215,4 +215,29 @@ for mark in (True, False):
     assert mesh.use_auto_smooth and abs(mesh.auto_smooth_angle - math.pi) < 1e-6
     bpy.data.objects.remove(bpy.data.objects["smooth"])
 
+# A user's edge marks (seams, creases here) stay on the edges sharpening keeps
+# (between the same two original vertices), and only there.
+mc = read_ply(pathlib.Path(args.source) / "test_meshes" / "generated" / "lblock_mc2.ply")
+obj = new_object("marked_lblock", mc["vertices"], mc["faces"])
+mesh = obj.data
+before = np.sort(np.array([e.vertices[:] for e in mesh.edges]), axis=1)
+mesh.edges.foreach_set("use_seam", np.ones(len(mesh.edges), bool))
+if "crease" in bpy.types.MeshEdge.bl_rna.properties:
+    mesh.edges.foreach_set("crease", np.full(len(mesh.edges), 0.5, np.float32))
+n = len(mesh.vertices)
+assert sharpen(mark_sharp=False) == {"FINISHED"}
+mesh = bpy.data.objects["marked_lblock"].data
+after = np.sort(np.array([e.vertices[:] for e in mesh.edges]), axis=1)
+key = len(mesh.vertices) + 1  # above every vertex index, before and after
+kept = np.isin(after[:, 0] * key + after[:, 1], before[:, 0] * key + before[:, 1])
+seams = np.zeros(len(mesh.edges), bool)
+mesh.edges.foreach_get("use_seam", seams)
+assert len(mesh.vertices) > n and 0.5 * len(before) < kept.sum() < len(before), kept.sum()
+assert np.array_equal(seams, kept), "a seam was lost or added"
+if "crease" in bpy.types.MeshEdge.bl_rna.properties:
+    crease = np.zeros(len(mesh.edges), np.float32)
+    mesh.edges.foreach_get("crease", crease)
+    assert np.allclose(crease[kept], 0.5) and not crease[~kept].any(), "a crease was lost or added"
+print(f"edge marks: {kept.sum()} of {len(before)} input edges kept with their seams and creases")
+
 print("blender add-on test: all checks passed")
