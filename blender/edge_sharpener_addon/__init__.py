@@ -129,11 +129,15 @@ _EDGE_MARKS = (("use_edge_sharp", "sharp_edge", bool), ("use_seam", None, bool),
 
 
 def _edge_ends(mesh):
-    """Each edge's two vertex indices, lower first, as one int64 key per edge."""
+    """Each edge's two vertex indices, lower first, as an (edges, 2) int64 array."""
     ends = np.empty(2 * len(mesh.edges), dtype=np.int64)
     mesh.edges.foreach_get("vertices", ends)
-    ends = np.sort(ends.reshape(-1, 2), axis=1)
-    return ends[:, 0] * (len(mesh.vertices) + 1) + ends[:, 1], ends
+    return np.sort(ends.reshape(-1, 2), axis=1)
+
+
+def _pair_keys(pairs, mesh):
+    """One int64 per vertex pair (lower index first) of the mesh as it is now."""
+    return pairs[:, 0] * (len(mesh.vertices) + 1) + pairs[:, 1]
 
 
 def _edge_values(mesh, prop, attribute, dtype, values=None):
@@ -159,7 +163,7 @@ def _edge_values(mesh, prop, attribute, dtype, values=None):
 def edge_marks(mesh):
     """The marked edges (sharp, seam, crease) as (vertex pairs, {mark: values}), for
     keep_edge_marks: the original vertices keep their index through sharpening."""
-    _, ends = _edge_ends(mesh)
+    ends = _edge_ends(mesh)
     marks = {}
     for prop, attribute, dtype in _EDGE_MARKS:
         values = _edge_values(mesh, prop, attribute, dtype)
@@ -174,8 +178,7 @@ def keep_edge_marks(mesh, kept):
     ends, marks = kept
     if not marks:
         return
-    keys, _ = _edge_ends(mesh)
-    old_keys = ends[:, 0] * (len(mesh.vertices) + 1) + ends[:, 1]
+    keys, old_keys = _pair_keys(_edge_ends(mesh), mesh), _pair_keys(ends, mesh)
     order = np.argsort(old_keys)
     where = np.searchsorted(old_keys[order], keys)
     found = where < len(old_keys)
@@ -194,9 +197,7 @@ def mark_sharp_edges(mesh, pairs):
     Returns the number of edges marked."""
     if len(pairs) == 0 or len(mesh.edges) == 0:
         return 0
-    keys, _ = _edge_ends(mesh)
-    n = len(mesh.vertices) + 1
-    sharp = np.isin(keys, pairs[:, 0] * n + pairs[:, 1])
+    sharp = np.isin(_pair_keys(_edge_ends(mesh), mesh), _pair_keys(pairs, mesh))
     marked = _edge_values(mesh, "use_edge_sharp", "sharp_edge", bool)
     _edge_values(mesh, "use_edge_sharp", "sharp_edge", bool, sharp if marked is None else marked | sharp)
     if hasattr(mesh, "use_auto_smooth") and not mesh.use_auto_smooth and len(mesh.polygons) and \
