@@ -424,6 +424,33 @@ TEST(IntersectionGuard, FacesMeetingAtADuplicatedVertexOnlyTouch) {
   EXPECT_TRUE(es::detail::facesIntersect<es::Mesh>(&m.face[0], &m.face[1], at));
 }
 
+// A fold through a shared vertex is found at any scale: vcglib's segment
+// test took every segment of a part a hundredth of a unit in size for one
+// parallel to the face, and the guard never saw such a fold.
+TEST(IntersectionGuard, FoldThroughASharedVertexAtEveryScale) {
+  using es::Vec3;
+  const auto at = [](const es::Mesh::VertexType *v) { return es::positionOf(v); };
+  for (const double scale : {1e-4, 1e-2, 1.0, 1e3}) {
+    es::Mesh m;
+    // g crosses f along a line from their vertex 0 through f's inside
+    // (turned 13 degrees about it).
+    const double rise = std::tan(5 * M_PI / 180);
+    es::hand_built::makeMesh(
+        m,
+        {Vec3(0, 0, 0) * scale, Vec3(-1, 0.5, 0) * scale, Vec3(-1, -0.5, 0) * scale,
+         Vec3(-1, 0.3, -0.8 * rise) * scale, Vec3(-1, -0.3, 0.8 * rise) * scale},
+        {{0, 1, 2}, {0, 3, 4}});
+    EXPECT_TRUE(es::detail::facesIntersect<es::Mesh>(&m.face[0], &m.face[1], at)) << scale;
+    // g beside f, above its plane.
+    es::hand_built::makeMesh(
+        m,
+        {Vec3(0, 0, 0) * scale, Vec3(-1, 0.5, 0) * scale, Vec3(-1, -0.5, 0) * scale,
+         Vec3(1, 0.3, rise) * scale, Vec3(1, -0.3, rise) * scale},
+        {{0, 1, 2}, {0, 3, 4}});
+    EXPECT_FALSE(es::detail::facesIntersect<es::Mesh>(&m.face[0], &m.face[1], at)) << scale;
+  }
+}
+
 TEST(IntersectionGuard, BoxOverlapFindsFacesInTheLastPartialCell) {
   es::Mesh m;
   using Alloc = vcg::tri::Allocator<es::Mesh>;

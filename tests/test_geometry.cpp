@@ -329,6 +329,38 @@ TEST(TrianglesApart, CrossingOverlappingAndTouchingAreNotApart) {
   EXPECT_TRUE(es::trianglesApart(flat, above));
 }
 
+TEST(SegmentThroughTriangle, SameAnswerAtEveryScale) {
+  // A segment crossing a triangle 2 degrees off its plane, one beside it,
+  // one short of it, one ending on it, one in it and one grazing it: at the size of a part in
+  // metres, millimetres and of a building. (vcglib's test called every
+  // segment of the smallest parallel.)
+  for (const double scale : {1e-5, 1e-2, 1.0, 1e3}) {
+    const std::array<Vec3, 3> t{Vec3(0, 0, 0) * scale, Vec3(1, 0, 0) * scale,
+                                Vec3(0, 1, 0) * scale};
+    const double rise = std::tan(2 * M_PI / 180);
+    const auto crossing = es::segmentThroughTriangle(Vec3(-0.5, 0.25, -0.75 * rise) * scale,
+                                                     Vec3(1.0, 0.25, 0.75 * rise) * scale, t);
+    ASSERT_TRUE(crossing.has_value()) << scale;
+    EXPECT_NEAR((*crossing)[0], 0.25, 1e-9) << scale;
+    EXPECT_NEAR((*crossing)[1], 0.25, 1e-9) << scale;
+    EXPECT_FALSE(
+        es::segmentThroughTriangle(Vec3(0.6, 0.6, -1) * scale, Vec3(0.6, 0.6, 1) * scale, t))
+        << scale;  // passes the plane beyond the hypotenuse
+    EXPECT_FALSE(es::segmentThroughTriangle(Vec3(0.2, 0.2, 0.5) * scale, Vec3(0.2, 0.2, 1) * scale,
+                                            t))
+        << scale;  // stops short of the plane
+    EXPECT_FALSE(es::segmentThroughTriangle(Vec3(0.2, 0.2, 0) * scale, Vec3(0.2, 0.2, 1) * scale,
+                                            t))
+        << scale;  // ends on it
+    EXPECT_FALSE(es::segmentThroughTriangle(Vec3(-1, 0.2, 0) * scale, Vec3(1, 0.2, 0) * scale, t))
+        << scale;  // in the plane
+    const double graze = std::tan(0.2 * M_PI / 180);
+    EXPECT_FALSE(es::segmentThroughTriangle(Vec3(-0.5, 0.25, -0.75 * graze) * scale,
+                                            Vec3(1.0, 0.25, 0.75 * graze) * scale, t))
+        << scale;  // grazing: 0.2 degrees off the plane
+  }
+}
+
 TEST(LiesOnSegment, OnItUpToFloatRoundingOnly) {
   const Vec3 a(100, 0, 0), b(101, 1, 0);
   EXPECT_TRUE(es::liesOnSegment(Vec3(100.5, 0.5, 0), a, b));

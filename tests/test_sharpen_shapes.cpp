@@ -5,9 +5,12 @@
 #include <vcg/complex/algorithms/clean.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "edge_sharpener/edge_sharpener.h"
 #include "edge_sharpener/util/mesh_types.h"
@@ -302,4 +305,44 @@ TEST(SharpenShapes, AutoKeepsAnInsertedVertexAtRestOnlyBesideAMove) {
     exercised += r.evidence.weakFeatures > 0 && r.evidence.facesGivenBack > 0 && resting > 0;
   }
   EXPECT_GT(exercised, 0u);  // some shape had weak features, given-back faces and kept vertices
+}
+
+// Sharpening does not depend on the model's units: a model in metres gives
+// the output it gives in millimetres, scaled. Scaling by a power of two is
+// exact in floating point, so the outputs must agree to the bit. (The
+// intersection guard's test of faces sharing a vertex took every segment of
+// a model a hundredth of a unit in size for one parallel to the face.)
+TEST(SharpenShapes, SameOutputInAnyUnit) {
+  for (const char *name : {"lblock_tilted", "wedge", "cross_prism"})
+    for (const double fraction : {0.01, 0.02})
+      for (const es::Method method : {es::Method::Auto, es::Method::Paper}) {
+        const shapes::Shape &shape = shapes::shapeByName(name);
+        es::Mesh input;
+        shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, fraction), input);
+        es::SharpenOptions opt;
+        opt.method = method;
+        std::vector<es::Mesh> outputs(3);
+        const double scales[3] = {1.0, std::ldexp(1.0, -14), std::ldexp(1.0, 10)};
+        for (int s = 0; s < 3; ++s) {
+          vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(outputs[s], input);
+          for (auto &v : outputs[s].vert) v.P() *= float(scales[s]);
+          vcg::tri::UpdateTopology<es::Mesh>::FaceFace(outputs[s]);
+          es::sharpen(outputs[s], opt);
+        }
+        const std::string label = std::string(name) + " at " + std::to_string(fraction) +
+                                  (method == es::Method::Auto ? " auto" : " paper");
+        for (int s = 1; s < 3; ++s) {
+          ASSERT_EQ(outputs[s].vert.size(), outputs[0].vert.size()) << label << ", scale " << s;
+          ASSERT_EQ(outputs[s].face.size(), outputs[0].face.size()) << label << ", scale " << s;
+          std::size_t differing = 0;
+          for (std::size_t v = 0; v < outputs[0].vert.size(); ++v)
+            differing += !(es::positionOf(&outputs[s].vert[v]) / scales[s] ==
+                           es::positionOf(&outputs[0].vert[v]));
+          for (std::size_t f = 0; f < outputs[0].face.size(); ++f)
+            for (int k = 0; k < 3; ++k)
+              differing += vcg::tri::Index(outputs[s], outputs[s].face[f].cV(k)) !=
+                           vcg::tri::Index(outputs[0], outputs[0].face[f].cV(k));
+          EXPECT_EQ(differing, 0u) << label << ", scale " << scales[s];
+        }
+      }
 }

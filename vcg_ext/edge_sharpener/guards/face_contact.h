@@ -26,7 +26,8 @@ inline bool trianglesMeet(const std::array<Vec3, 3> &p, const std::array<Vec3, 3
 /// the coordinates in double precision, with corners at the same position
 /// counted as shared. Faces sharing an edge are not tested;
 /// faces sharing one vertex intersect when the edge opposite the shared
-/// vertex in one, pulled halfway towards it, crosses the other; other faces
+/// vertex in one, pulled halfway towards it, crosses the other (vcglib's
+/// segment test made scale-free: segmentThroughTriangle()); other faces
 /// by Moeller's triangle-triangle test, touching included, unless
 /// trianglesApart() finds a gap between them. (In float,
 /// Moeller's test reports nearly coplanar faces millimetres apart as
@@ -52,10 +53,11 @@ bool facesIntersect(FaceType *f, FaceType *g, Position &&position) {
   for (int side = 0; side < 2; ++side) {
     const Vec3 *a = side == 0 ? p.data() : q.data(), *b = side == 0 ? q.data() : p.data();
     const int ia = side == 0 ? i0 : i1;
-    const vcg::Segment3<double> seg(a[(ia + 1) % 3] * 0.5 + half, a[(ia + 2) % 3] * 0.5 + half);
-    double u, v;
-    if (vcg::IntersectionSegmentTriangle(seg, vcg::Triangle3<double>(b[0], b[1], b[2]), u, v)) {
-      constexpr double kEps = 1e-6;  // vcglib's EPSIL
+    const std::array<Vec3, 3> other{b[0], b[1], b[2]};
+    if (const auto uv = segmentThroughTriangle(a[(ia + 1) % 3] * 0.5 + half,
+                                               a[(ia + 2) % 3] * 0.5 + half, other)) {
+      constexpr double kEps = 1e-6;  // vcglib's EPSIL, on barycentric coordinates
+      const auto [u, v] = *uv;
       return !(u + v >= 1 || u <= kEps || v <= kEps);
     }
   }
