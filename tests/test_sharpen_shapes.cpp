@@ -315,7 +315,7 @@ TEST(SharpenShapes, AutoKeepsAnInsertedVertexAtRestOnlyBesideAMove) {
 TEST(SharpenShapes, SameOutputInAnyUnit) {
   for (const char *name : {"lblock_tilted", "wedge", "cross_prism"})
     for (const double fraction : {0.01, 0.02})
-      for (const es::Method method : {es::Method::Auto, es::Method::Paper}) {
+      for (const es::Method method : {es::Method::Auto, es::Method::Paper, es::Method::Extended}) {
         const shapes::Shape &shape = shapes::shapeByName(name);
         es::Mesh input;
         shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, fraction), input);
@@ -330,7 +330,9 @@ TEST(SharpenShapes, SameOutputInAnyUnit) {
           es::sharpen(outputs[s], opt);
         }
         const std::string label = std::string(name) + " at " + std::to_string(fraction) +
-                                  (method == es::Method::Auto ? " auto" : " paper");
+                                  (method == es::Method::Auto    ? " auto"
+                                   : method == es::Method::Paper ? " paper"
+                                                                 : " extended");
         for (int s = 1; s < 3; ++s) {
           ASSERT_EQ(outputs[s].vert.size(), outputs[0].vert.size()) << label << ", scale " << s;
           ASSERT_EQ(outputs[s].face.size(), outputs[0].face.size()) << label << ", scale " << s;
