@@ -1165,7 +1165,7 @@ def default_section(results):
           "face does not pass through it. The same model in metres, millimetres or "
           "kilometres (scaled by powers of two, which floating point keeps exact) now gives "
           "the same output to the bit (`SharpenShapes.SameOutputInAnyUnit`: three shapes, "
-          "both methods, scales 2^-14 and 2^10; lblock_tilted failed it before). A first "
+          "the three methods, scales 2^-14 and 2^10; lblock_tilted failed it before). A first "
           "version bounded the angle at 1e-6 radians and kept the segment's ends: in the "
           "full run (both halves seen) the guard then took the nearly flat folds OpenVDB "
           "leaves in its meshes for crossings and sent whole stretches back (pyramid by "
