@@ -51,11 +51,10 @@ bool facesIntersect(FaceType *f, FaceType *g, Position &&position) {
   // As vcglib: the first segment that meets the other face decides.
   const Vec3 half = p[i0] * 0.5;
   for (int side = 0; side < 2; ++side) {
-    const Vec3 *a = side == 0 ? p.data() : q.data(), *b = side == 0 ? q.data() : p.data();
+    const std::array<Vec3, 3> &a = side == 0 ? p : q, &b = side == 0 ? q : p;
     const int ia = side == 0 ? i0 : i1;
-    const std::array<Vec3, 3> other{b[0], b[1], b[2]};
-    if (const auto uv = segmentThroughTriangle(a[(ia + 1) % 3] * 0.5 + half,
-                                               a[(ia + 2) % 3] * 0.5 + half, other)) {
+    if (const auto uv =
+            segmentThroughTriangle(a[(ia + 1) % 3] * 0.5 + half, a[(ia + 2) % 3] * 0.5 + half, b)) {
       constexpr double kEps = 1e-6;  // vcglib's EPSIL, on barycentric coordinates
       const auto [u, v] = *uv;
       return !(u + v >= 1 || u <= kEps || v <= kEps);
