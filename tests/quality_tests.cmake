@@ -57,8 +57,9 @@
 #                               worse (skipped without OpenVDB).
 #   quality.partly_sharp        cross_prism by OpenVDB as Blender's voxel remesh with Preserve
 #                               Volume at 1% and 0.5%: sharp already at its convex edges,
-#                               chamfered at its concave ones, which are sharpened; RMS factors
-#                               against floors, none made worse (skipped without OpenVDB).
+#                               chamfered at its concave ones, which are sharpened up to the
+#                               saddle corners; RMS factors against floors, none made worse
+#                               (skipped without OpenVDB).
 #   quality.corner_cells        cylinder_block and lblock_tilted by OpenVDB at 1% and 0.5%: the
 #                               remesher's vertex in a convex corner's cell goes onto a face's
 #                               plane; max factors against floors, none made worse (skipped

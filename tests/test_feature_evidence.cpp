@@ -406,7 +406,9 @@ TEST(FeatureEvidence, MovesThatOnlySlideLeaveTheWholeMesh) {
 // edges it meets and leaves others chamfered: on a mesh sampled exactly,
 // a mostly sliding median leaves only the sliding features, and the
 // chamfered strip lifting to its edge is judged alone. An edge already
-// sharp is no evidence against the corner it runs into.
+// sharp is no evidence against the corner it runs into, and is flagged as
+// such: of its moves only those that slide go back (the guard judges the
+// others one by one).
 TEST(FeatureEvidence, OnAMeshSampledExactlyOnlyTheFeaturesThatSlideAreAlreadySharp) {
   TwoStripsAndACorner t;
   std::vector<es::Feature> features;
@@ -415,22 +417,35 @@ TEST(FeatureEvidence, OnAMeshSampledExactlyOnlyTheFeaturesThatSlideAreAlreadySha
   features[a].medianLift = 0.0;  // strip A slides along the input
   features[b].medianLift = 0.8;  // strip B lifts to its edge
   es::SharpenOptions opt;        // median lift at least 0.07
+  std::vector<char> alreadySharp;
   auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
-                               /*exactSampling=*/true);
+                               /*exactSampling=*/true, &alreadySharp);
   EXPECT_TRUE(weak[a]);
   EXPECT_FALSE(weak[b]);
   EXPECT_FALSE(weak[corner]);
+  // Strip A is weak for sliding alone: its moves that lift are judged one by one.
+  ASSERT_EQ(alreadySharp.size(), features.size());
+  EXPECT_TRUE(alreadySharp[a]);
+  EXPECT_FALSE(alreadySharp[b] || alreadySharp[corner]);
   features[corner].medianLift = 0.0;  // the corner slides too
   weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
-                          /*exactSampling=*/true);
+                          /*exactSampling=*/true, &alreadySharp);
   EXPECT_TRUE(weak[corner]);
+  EXPECT_TRUE(alreadySharp[corner]);
   features[corner].medianLift = 1.0;
   features[b] = feature(3, 3, /*offPlane=*/1.0);  // strip B weak by its evidence: its corner too
   features[b].medianLift = 0.8;
   weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
-                          /*exactSampling=*/true);
+                          /*exactSampling=*/true, &alreadySharp);
   EXPECT_TRUE(weak[b]);
   EXPECT_TRUE(weak[corner]);
+  // Weak by their evidence, not by sliding: every move of theirs goes back.
+  EXPECT_FALSE(alreadySharp[b] || alreadySharp[corner]);
+  features[b].medianLift = 0.0;  // weak by its evidence and sliding: the evidence decides
+  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
+                          /*exactSampling=*/true, &alreadySharp);
+  EXPECT_TRUE(weak[b]);
+  EXPECT_FALSE(alreadySharp[b]);
   features[b] = feature(3, 3);
   features[b].medianLift = 0.8;
   EXPECT_FALSE(es::meshEvidenceIsWeak(0.0, 0.03, kRoughSurface, opt, /*exactSampling=*/true));
@@ -439,9 +454,11 @@ TEST(FeatureEvidence, OnAMeshSampledExactlyOnlyTheFeaturesThatSlideAreAlreadySha
   weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.5, kRoughSurface, opt,
                           /*exactSampling=*/true);
   EXPECT_FALSE(weak[a] || weak[b] || weak[corner]);
-  // Not sampled exactly: the whole mesh is already sharp.
-  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt);
+  // Not sampled exactly: the whole mesh is already sharp, every move goes back.
+  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
+                          /*exactSampling=*/false, &alreadySharp);
   for (char w : weak) EXPECT_TRUE(w);
+  for (char s : alreadySharp) EXPECT_FALSE(s);
 }
 
 TEST(FeatureEvidence, EachFeatureTakesTheMedianLiftOfItsOwnMoves) {

@@ -8,15 +8,17 @@ only slide along the input (lift near 0), while its concave edges stay chamfered
 move slid, so the default method took the whole mesh for a model already sharp and left it as
 it was. On a mesh sampled exactly (feature_evidence.h: sampledExactly) only the features whose
 own moves slide are already sharp now, and they do not make the corners they run into weak
-(weakFeatures). Asserted: both inputs made, sharpened and measured, neither made worse
-(families.is_worse: max up > 2% or RMS up > 1%), and the RMS error down by at least
-MIN_RMS_FACTORS (measured x1.33 and x1.92; x1.00 before the rule, x1.31 and x1.73 with the
-corners still taking the sharp edges' verdict); the report counts the features left as already
-sharp, and not every feature is left.
+(weakFeatures). Of those features, the moves that lift their vertex off the input stay
+(EvidenceGuard::revertWeakFeatures): where a concave edge ends at a saddle corner the remesher
+bridged it, and the new vertex there restores the edge's end. Asserted: both inputs made,
+sharpened and measured, neither made worse (families.is_worse: max up > 2% or RMS up > 1%), and
+the RMS error down by at least MIN_RMS_FACTORS (measured x6.1 at 1% and x5.7 at 0.5%; x1.33 and
+x1.92 with every move of a feature already sharp sent back, x1.00 before the rule); the report
+counts the features left as already sharp, and not every feature is left.
 """
 import checks  # first: puts bench/quality on sys.path
 
-MIN_RMS_FACTORS = {"1%": 1.2, "0.5%": 1.6}
+MIN_RMS_FACTORS = {"1%": 4.0, "0.5%": 4.0}
 
 
 def reports_already_sharp(case, run, failures):

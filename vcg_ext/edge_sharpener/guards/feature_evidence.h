@@ -206,16 +206,18 @@ std::vector<std::vector<double>> sourceOffPlanes(const MeshType &m,
 /// Counts, per feature, its inserted vertices still in the mesh and those
 /// placed on their planes (Feature::vertices, Feature::moved). A vertex
 /// moved across a bending flank (MeshLabels::bentFlank) counts as refused:
-/// it moves on its feature's evidence, not its own.
+/// it moves on its feature's evidence, not its own. The inserted vertices
+/// flagged in `uncounted` (split plan order) count in neither.
 template <class MeshType>
 void countFeatureMoves(const MeshType &m, const VertexMoves<MeshType> &moves,
-                       const std::vector<std::uint32_t> &featureOf,
-                       std::vector<Feature> &features) {
+                       const std::vector<std::uint32_t> &featureOf, std::vector<Feature> &features,
+                       const std::vector<char> *uncounted = nullptr) {
   for (Feature &f : features) f.vertices = f.moved = 0;
   const std::size_t first = moves.firstInserted();
   const auto &bent = moves.labels().bentFlank;
   for (std::size_t k = 0; k < featureOf.size(); ++k) {
-    if (m.vert[first + k].IsD()) continue;
+    if (m.vert[first + k].IsD() || (uncounted && k < uncounted->size() && (*uncounted)[k]))
+      continue;
     ++features[featureOf[k]].vertices;
     features[featureOf[k]].moved += moves.isMoved(first + k) && !bent[first + k];
   }
@@ -521,11 +523,14 @@ inline bool meshEvidenceIsWeak(double refused, double lift, const SurfaceMeasure
 /// on a mesh sampled exactly or not) and the corners one of whose edges' is
 /// (a corner is where its edges meet), and, on a mesh sampled exactly and
 /// mostly sharp already, those whose own moves slide along it
-/// (Feature::medianLift).
+/// (Feature::medianLift; flagged in `alreadySharp` too, when given: their
+/// moves that lift are judged one by one, EvidenceGuard::revertWeakFeatures).
 inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<Feature> &features,
                                       const std::vector<std::uint32_t> &featureOf, double lift,
                                       const SurfaceMeasures &surface, const SharpenOptions &opt,
-                                      bool exactSampling = false) {
+                                      bool exactSampling = false,
+                                      std::vector<char> *alreadySharp = nullptr) {
+  if (alreadySharp) alreadySharp->assign(features.size(), 0);
   if (meshEvidenceIsWeak(refusedFraction(features), lift, surface, opt, exactSampling))
     return std::vector<char>(features.size(), 1);
   std::vector<char> weak(features.size(), 0);
@@ -542,8 +547,11 @@ inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<F
     if (features[featureOf[k]].corner)
       for (int i = 0; i < plan.inserted[k].originalCount; ++i)
         if (weakSource[plan.inserted[k].original[i]]) weak[featureOf[k]] = 1;
-  for (std::size_t c = 0; c < features.size(); ++c)
-    weak[c] = weak[c] || leftAsAlreadySharp(features[c], lift, opt);
+  for (std::size_t c = 0; c < features.size(); ++c) {
+    const bool sharpAlready = !weak[c] && leftAsAlreadySharp(features[c], lift, opt);
+    if (alreadySharp) (*alreadySharp)[c] = sharpAlready;
+    weak[c] = weak[c] || sharpAlready;
+  }
   return weak;
 }
 
@@ -578,6 +586,7 @@ class EvidenceGuard {
     EvidenceStats stats;
     std::vector<double> lifts;
     std::vector<char> weak;
+    std::vector<char> alreadySharp;
   };
 
   /// One inserted vertex's own evidence, in sample spacings: how far it is
@@ -627,7 +636,7 @@ class EvidenceGuard {
       countSheetCrossings(m_, moves_, support_, out.lifts, featureOf_, longestInputEdge_,
                           features_);
     out.weak = weakFeatures(moves_.plan(), features_, featureOf_, stats.medianLift, surface_, opt_,
-                            exactSampling_);
+                            exactSampling_, &out.alreadySharp);
     for (std::size_t c = 0; c < features_.size(); ++c) {
       if (!out.weak[c] || features_[c].moved == 0) continue;
       ++stats.weakFeatures;
@@ -640,7 +649,12 @@ class EvidenceGuard {
   /// Sends back to rest every move of the features whose evidence is weak
   /// (weakFeatures), and of the other features' vertices whose own evidence
   /// is weak (vertexIsWeak): their inserted vertices (as Placement::WeakEvidence)
-  /// and the zone vertices projected beside them. Runs before the cleanup: a
+  /// and the zone vertices projected beside them. Of a feature already sharp
+  /// (leftAsAlreadySharp) only the moves that slide go back: a move that
+  /// lifts its vertex off the input (its own lift at least the median
+  /// bound) cuts back a chamfer the sampler left in a feature otherwise
+  /// sharp, as at a saddle corner where a remesher casting its vertices onto
+  /// the input bridged the concave edge's end. Runs before the cleanup: a
   /// feature left as it was is never touched by the cleanup's collapses and
   /// flips, so its faces are the input's exactly.
   EvidenceStats revertWeakFeatures() {
@@ -648,9 +662,16 @@ class EvidenceGuard {
     EvidenceStats stats = judged.stats;
     const SplitPlan &plan = moves_.plan();
     const std::vector<char> &weak = judged.weak;
+    slidingVertex_.assign(plan.inserted.size(), 0);
     const std::size_t first = moves_.firstInserted();
     for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
-      if (m_.vert[first + k].IsD() || !(weak[featureOf_[k]] || vertexIsWeak(k))) continue;
+      if (m_.vert[first + k].IsD()) continue;
+      const std::uint32_t c = featureOf_[k];
+      // Not moved (lift -1): placement left it; nothing to cut back there.
+      slidingVertex_[k] = judged.alreadySharp[c] &&
+                          (judged.lifts[k] < 0 || mostlyAlreadySharp(judged.lifts[k], opt_));
+      const bool featureSendsBack = judged.alreadySharp[c] ? slidingVertex_[k] : weak[c];
+      if (!(featureSendsBack || vertexIsWeak(k))) continue;
       if (moves_.isMoved(first + k)) {
         moves_.sendBack(first + k, Placement::WeakEvidence);
         ++stats.reverted;
@@ -673,7 +694,7 @@ class EvidenceGuard {
   /// flips undone). \return whether it did.
   bool leaveMeshIfGuardsRefused(const ElementSnapshot<MeshType> &beforeGuards,
                                 EvidenceStats &stats) {
-    countFeatureMoves(m_, moves_, featureOf_, features_);
+    countFeatureMoves(m_, moves_, featureOf_, features_, &slidingVertex_);
     const double refused = refusedFraction(features_);
     if (!(refused > refusedBound(surface_, opt_))) return false;
     beforeGuards.restore(m_, moves_.labels());
@@ -705,6 +726,10 @@ class EvidenceGuard {
   std::vector<Feature> features_;
   std::vector<std::uint32_t> featureOf_;
   bool exactSampling_ = false;  ///< sampledExactly, set by judge()
+  /// Per inserted vertex: in a feature already sharp, its own move slides
+  /// (set by revertWeakFeatures). Such a vertex is neither moved nor refused:
+  /// the input is sharp there; the count after the guards leaves it out.
+  std::vector<char> slidingVertex_;
 };
 
 }  // namespace edge_sharpener
