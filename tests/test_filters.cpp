@@ -451,6 +451,45 @@ TEST(IntersectionGuard, FoldThroughASharedVertexAtEveryScale) {
   }
 }
 
+// Two moves that cross only together: new vertex a pushes the flat face
+// a p q through the plane x = 0, new vertex b lowers the upright face b r s
+// to meet it; either going back parts them. The guard sends one back; a
+// vertex flagged to retreat first (a move on weaker evidence: the evidence
+// guard's keptMoves) is the one, whichever it chose unflagged.
+TEST(IntersectionGuard, AVertexFlaggedToRetreatFirstIsTheOneSentBack) {
+  using es::Vec3;
+  const Vec3 aRest(-0.2, 0, 0.5), aMoved(0.3, 0, 0.5), bRest(0, 0, 0.8), bMoved(0, 0, 0);
+  const auto sentBack = [&](const std::vector<char> *retreatFirst) {
+    es::Mesh m;
+    // p q r s, then the new vertices a (4) and b (5) where placement put them.
+    es::hand_built::makeMesh(
+        m, {Vec3(-1, -0.5, 0.5), Vec3(-1, 0.5, 0.5), Vec3(0, -1, 1), Vec3(0, 1, 1), aMoved, bMoved},
+        {{4, 0, 1}, {5, 3, 2}});
+    es::SplitPlan plan;
+    plan.originalVertexCount = 4;
+    for (const Vec3 &rest : {aRest, bRest}) {
+      es::InsertedVertexSource source;
+      source.original = {0, 1, 0};
+      source.originalCount = 2;
+      source.rest = rest;
+      plan.inserted.push_back(source);
+    }
+    es::MeshLabels<es::Mesh> labels(m);
+    labels.placement[4] = labels.placement[5] = es::Placement::Moved;
+    es::VertexMoves<es::Mesh> moves(m, plan, labels, false);
+    const es::IntersectionStats stats =
+        es::revertSelfIntersections(m, moves, 1 * M_PI / 180, 2.0, retreatFirst);
+    EXPECT_EQ(stats.intersectingPairs, 1u);
+    EXPECT_TRUE(moves.isMoved(4) != moves.isMoved(5)) << "exactly one goes back";
+    return moves.isMoved(4) ? std::size_t(5) : std::size_t(4);
+  };
+  const std::size_t unflagged = sentBack(nullptr);
+  const std::size_t other = unflagged == 4 ? 5 : 4;
+  std::vector<char> first(6, 0);
+  first[other] = 1;
+  EXPECT_EQ(sentBack(&first), other);
+}
+
 TEST(IntersectionGuard, BoxOverlapFindsFacesInTheLastPartialCell) {
   es::Mesh m;
   using Alloc = vcg::tri::Allocator<es::Mesh>;

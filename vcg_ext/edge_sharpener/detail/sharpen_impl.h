@@ -260,7 +260,8 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
         m, [&](std::size_t v) { return !moves.isAtRest(v); },
         kFoldPlaneSpacings * spacingUnit(zones.support), opt.degenerateAngleRad);
   report.intersections =
-      revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
+      revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge,
+                              evidence ? &evidence->retreatFirst() : nullptr);
   if (evidence && evidence->leaveMeshIfGuardsRefused(*beforeGuards, report.evidence)) {
     report.cleanup = {};  // undone
     report.intersections = {};

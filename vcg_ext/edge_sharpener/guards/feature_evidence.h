@@ -649,29 +649,22 @@ class EvidenceGuard {
   /// Sends back to rest every move of the features whose evidence is weak
   /// (weakFeatures), and of the other features' vertices whose own evidence
   /// is weak (vertexIsWeak): their inserted vertices (as Placement::WeakEvidence)
-  /// and the zone vertices projected beside them. Of a feature already sharp
-  /// (leftAsAlreadySharp) only the moves that slide go back: a move that
-  /// lifts its vertex off the input (its own lift at least the median
-  /// bound) cuts back a chamfer the sampler left in a feature otherwise
-  /// sharp, as at a saddle corner where a remesher casting its vertices onto
-  /// the input bridged the concave edge's end. Runs before the cleanup: a
+  /// and the zone vertices projected beside them (keptMoves). Of a feature
+  /// already sharp (leftAsAlreadySharp) only the moves that slide go back: a
+  /// move that lifts its vertex off the input cuts back a chamfer the sampler
+  /// left in a feature otherwise sharp, as at a saddle corner where a
+  /// remesher casting its vertices onto the input bridged a concave edge's
+  /// end. Runs before the cleanup: a
   /// feature left as it was is never touched by the cleanup's collapses and
   /// flips, so its faces are the input's exactly.
   EvidenceStats revertWeakFeatures() {
     const Judgement judged = judge();
     EvidenceStats stats = judged.stats;
     const SplitPlan &plan = moves_.plan();
-    const std::vector<char> &weak = judged.weak;
-    slidingVertex_.assign(plan.inserted.size(), 0);
+    const std::vector<char> kept = keptMoves(judged);
     const std::size_t first = moves_.firstInserted();
     for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
-      if (m_.vert[first + k].IsD()) continue;
-      const std::uint32_t c = featureOf_[k];
-      // Not moved (lift -1): placement left it; nothing to cut back there.
-      slidingVertex_[k] = judged.alreadySharp[c] &&
-                          (judged.lifts[k] < 0 || mostlyAlreadySharp(judged.lifts[k], opt_));
-      const bool featureSendsBack = judged.alreadySharp[c] ? slidingVertex_[k] : weak[c];
-      if (!(featureSendsBack || vertexIsWeak(k))) continue;
+      if (m_.vert[first + k].IsD() || kept[k]) continue;
       if (moves_.isMoved(first + k)) {
         moves_.sendBack(first + k, Placement::WeakEvidence);
         ++stats.reverted;
@@ -686,6 +679,48 @@ class EvidenceGuard {
     }
     return stats;
   }
+
+  /// Per inserted vertex (split plan order), whether its move stays: its
+  /// feature is not weak and its own evidence is not (vertexIsWeak). Of a
+  /// feature already sharp (Judgement::alreadySharp) the moves that lift
+  /// their vertex off the input stay (their own lift at least the median
+  /// bound: mostlyAlreadySharp), and so does the corner vertex of a face one
+  /// of whose edge vertices stays so: the edge it restores runs into that
+  /// corner. Those moves rest on their own evidence only: the intersection
+  /// guard sends them back first (retreatFirst). The others of such a
+  /// feature slide along the input, sharp there already (slidingVertex_).
+  std::vector<char> keptMoves(const Judgement &judged) {
+    const SplitPlan &plan = moves_.plan();
+    const std::size_t count = plan.inserted.size(), first = moves_.firstInserted();
+    std::vector<char> kept(count, 0), lifts(count, 0);
+    slidingVertex_.assign(count, 0);
+    retreatFirst_.assign(m_.vert.size(), 0);
+    const auto sharpAlready = [&](std::size_t k) { return judged.alreadySharp[featureOf_[k]]; };
+    for (std::size_t k = 0; k < count; ++k) {
+      if (m_.vert[first + k].IsD()) continue;
+      // Not moved (lift -1): placement left it, nothing to cut back there.
+      lifts[k] = judged.lifts[k] >= 0 && !mostlyAlreadySharp(judged.lifts[k], opt_);
+      kept[k] = (sharpAlready(k) ? lifts[k] : !judged.weak[featureOf_[k]]) && !vertexIsWeak(k);
+    }
+    for (const SplitFace &face : plan.faces) {
+      const int corner = face.centerVertex;
+      if (corner < 0 || kept[corner] || !sharpAlready(corner) || judged.lifts[corner] < 0 ||
+          vertexIsWeak(corner))
+        continue;
+      for (const int e : face.edgeVertex)
+        if (e >= 0 && sharpAlready(e) && lifts[e] && kept[e]) kept[corner] = 1;
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+      if (m_.vert[first + k].IsD() || !sharpAlready(k)) continue;
+      slidingVertex_[k] = !kept[k] && !lifts[k];
+      retreatFirst_[first + k] = kept[k];
+    }
+    return kept;
+  }
+
+  /// The vertices whose moves the intersection guard sends back first
+  /// (keptMoves), by vertex index; empty before revertWeakFeatures().
+  const std::vector<char> &retreatFirst() const { return retreatFirst_; }
 
   /// After the cleanup and the intersection guard: when they refused so
   /// many of the moves left that the mesh as a whole shows too little
@@ -727,9 +762,10 @@ class EvidenceGuard {
   std::vector<std::uint32_t> featureOf_;
   bool exactSampling_ = false;  ///< sampledExactly, set by judge()
   /// Per inserted vertex: in a feature already sharp, its own move slides
-  /// (set by revertWeakFeatures). Such a vertex is neither moved nor refused:
+  /// (set by keptMoves). Such a vertex is neither moved nor refused:
   /// the input is sharp there; the count after the guards leaves it out.
   std::vector<char> slidingVertex_;
+  std::vector<char> retreatFirst_;  ///< keptMoves: by vertex index
 };
 
 }  // namespace edge_sharpener

@@ -45,12 +45,13 @@ template <class MeshType>
 class IntersectionGuard {
  public:
   IntersectionGuard(MeshType &m, VertexMoves<MeshType> &moves, double degenerateAngleRad,
-                    double longestInputEdge)
+                    double longestInputEdge, const std::vector<char> *retreatFirst = nullptr)
       : m_(m),
         moves_(moves),
         n0_(moves.firstInserted()),
         degenerateAngleRad_(degenerateAngleRad),
-        stillExtent_(longestInputEdge) {}
+        stillExtent_(longestInputEdge),
+        retreatFirst_(retreatFirst) {}
 
   IntersectionStats run() {
     if (collectMovedVertices() == 0) return stats_;
@@ -295,8 +296,10 @@ class IntersectionGuard {
   }
 
   /// The pair's moved vertex that can stay farthest out, and that level;
-  /// ties: in more pairs, smaller displacement, lower index. (kNone, -1)
-  /// when the pair has no moved vertex left.
+  /// ties: in more pairs, smaller displacement, lower index. A vertex
+  /// flagged to retreat first (firstToRetreat) goes before the others
+  /// whatever their levels. (kNone, -1) when the pair has no moved vertex
+  /// left.
   std::pair<std::size_t, int> chooseRetreating(const FacePair &p) {
     std::size_t best = kNone;
     int bestLevel = -1;
@@ -306,13 +309,22 @@ class IntersectionGuard {
       const int lv = feasibleLevel(v);
       const double d =
           (positionOf(&m_.vert[v]) - Vec3::Construct(moves_.storedRest(v))).SquaredNorm();
-      const bool better = lv != bestLevel             ? lv > bestLevel
+      const bool first = firstToRetreat(v), bestFirst = best != kNone && firstToRetreat(best);
+      const bool better = best == kNone               ? true
+                          : first != bestFirst        ? first
+                          : lv != bestLevel           ? lv > bestLevel
                           : score_[v] != score_[best] ? score_[v] > score_[best]
                           : d != bestDisplacement     ? d < bestDisplacement
                                                       : v < best;
       if (better) best = v, bestLevel = lv, bestDisplacement = d;
     });
     return {best, bestLevel};
+  }
+
+  /// Whether v's move rests on weaker evidence than the others' (the
+  /// caller's retreatFirst: the evidence guard's keptMoves).
+  bool firstToRetreat(std::size_t v) const {
+    return retreatFirst_ && v < retreatFirst_->size() && (*retreatFirst_)[v];
   }
 
   /// The farthest level below the current one at which v's faces meet none
@@ -432,6 +444,7 @@ class IntersectionGuard {
   const std::size_t n0_;  // first inserted vertex
   const double degenerateAngleRad_;
   double stillExtent_;  // bound on a still face's extent along an axis
+  const std::vector<char> *retreatFirst_ = nullptr;
   IntersectionStats stats_;
   std::vector<char> away_;                        // still away from rest, free to retreat further
   std::vector<std::uint32_t> query_;              // faces of this round
@@ -474,11 +487,16 @@ class IntersectionGuard {
 /// VertexMoves::sendBack(). Deterministic (serial, index order).
 /// `longestInputEdge`: the input's longest edge (SharpenReport), which bounds
 /// the faces the split did not make.
+/// `retreatFirst` (by vertex index, optional): moves on weaker evidence,
+/// sent back first where a pair can be parted by more than one vertex.
 /// \pre removeDegenerateTriangles() ran (deleted elements not yet compacted).
 template <class MeshType>
 IntersectionStats revertSelfIntersections(MeshType &m, VertexMoves<MeshType> &moves,
-                                          double degenerateAngleRad, double longestInputEdge) {
-  return detail::IntersectionGuard<MeshType>(m, moves, degenerateAngleRad, longestInputEdge).run();
+                                          double degenerateAngleRad, double longestInputEdge,
+                                          const std::vector<char> *retreatFirst = nullptr) {
+  return detail::IntersectionGuard<MeshType>(m, moves, degenerateAngleRad, longestInputEdge,
+                                             retreatFirst)
+      .run();
 }
 
 }  // namespace edge_sharpener
