@@ -451,23 +451,24 @@ TEST(IntersectionGuard, FoldThroughASharedVertexAtEveryScale) {
   }
 }
 
-// Two moves that cross only together: new vertex a pushes the flat face
-// a p q through the plane x = 0, new vertex b lowers the upright face b r s
-// to meet it; either going back parts them. The guard sends one back; a
+// Two moves that cross only together, mirror images of each other (x and z
+// swapped): new vertex a pushes the flat face a p q (z = 0.2) out to
+// x = 0.3, new vertex b the upright face b r s (x = 0.2) up to z = 0.3;
+// either going back parts them, as far out. The guard sends one back; a
 // vertex flagged to retreat first (a move on weaker evidence: the evidence
 // guard's keptMoves) is the one, whichever it chose unflagged.
 TEST(IntersectionGuard, AVertexFlaggedToRetreatFirstIsTheOneSentBack) {
   using es::Vec3;
-  const Vec3 aRest(-0.2, 0, 0.5), aMoved(0.3, 0, 0.5), bRest(0, 0, 0.8), bMoved(0, 0, 0);
+  const auto swapXZ = [](const Vec3 &v) { return Vec3(v[2], v[1], v[0]); };
+  const Vec3 aRest(-0.2, 0, 0.2), aMoved(0.3, 0, 0.2), p(-1, -0.5, 0.2), q(-1, 0.5, 0.2);
   const auto sentBack = [&](const std::vector<char> *retreatFirst) {
     es::Mesh m;
     // p q r s, then the new vertices a (4) and b (5) where placement put them.
-    es::hand_built::makeMesh(
-        m, {Vec3(-1, -0.5, 0.5), Vec3(-1, 0.5, 0.5), Vec3(0, -1, 1), Vec3(0, 1, 1), aMoved, bMoved},
-        {{4, 0, 1}, {5, 3, 2}});
+    es::hand_built::makeMesh(m, {p, q, swapXZ(q), swapXZ(p), aMoved, swapXZ(aMoved)},
+                             {{4, 0, 1}, {5, 2, 3}});
     es::SplitPlan plan;
     plan.originalVertexCount = 4;
-    for (const Vec3 &rest : {aRest, bRest}) {
+    for (const Vec3 &rest : {aRest, swapXZ(aRest)}) {
       es::InsertedVertexSource source;
       source.original = {0, 1, 0};
       source.originalCount = 2;

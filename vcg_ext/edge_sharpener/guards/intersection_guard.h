@@ -296,10 +296,9 @@ class IntersectionGuard {
   }
 
   /// The pair's moved vertex that can stay farthest out, and that level;
-  /// ties: in more pairs, smaller displacement, lower index. A vertex
-  /// flagged to retreat first (firstToRetreat) goes before the others
-  /// whatever their levels. (kNone, -1) when the pair has no moved vertex
-  /// left.
+  /// ties: flagged to retreat first (firstToRetreat), in more pairs,
+  /// smaller displacement, lower index. (kNone, -1) when the pair has no
+  /// moved vertex left.
   std::pair<std::size_t, int> chooseRetreating(const FacePair &p) {
     std::size_t best = kNone;
     int bestLevel = -1;
@@ -311,8 +310,8 @@ class IntersectionGuard {
           (positionOf(&m_.vert[v]) - Vec3::Construct(moves_.storedRest(v))).SquaredNorm();
       const bool first = firstToRetreat(v), bestFirst = best != kNone && firstToRetreat(best);
       const bool better = best == kNone               ? true
-                          : first != bestFirst        ? first
                           : lv != bestLevel           ? lv > bestLevel
+                          : first != bestFirst        ? first
                           : score_[v] != score_[best] ? score_[v] > score_[best]
                           : d != bestDisplacement     ? d < bestDisplacement
                                                       : v < best;
@@ -488,7 +487,7 @@ class IntersectionGuard {
 /// `longestInputEdge`: the input's longest edge (SharpenReport), which bounds
 /// the faces the split did not make.
 /// `retreatFirst` (by vertex index, optional): moves on weaker evidence,
-/// sent back first where a pair can be parted by more than one vertex.
+/// sent back first where more than one vertex can part a pair as far out.
 /// \pre removeDegenerateTriangles() ran (deleted elements not yet compacted).
 template <class MeshType>
 IntersectionStats revertSelfIntersections(MeshType &m, VertexMoves<MeshType> &moves,
