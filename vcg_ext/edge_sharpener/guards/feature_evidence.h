@@ -686,9 +686,10 @@ class EvidenceGuard {
   /// their vertex off the input stay (their own lift at least the median
   /// bound: mostlyAlreadySharp), and so does the corner vertex of a face one
   /// of whose edge vertices stays so: the edge it restores runs into that
-  /// corner. Those moves rest on their own evidence only: the intersection
-  /// guard sends them back first (retreatFirst). The others of such a
-  /// feature slide along the input, sharp there already (slidingVertex_).
+  /// corner. Those moves rest on their own evidence only: of the vertices
+  /// that can part two crossing faces as far out, the intersection guard
+  /// sends them back first (retreatFirst). The others of such a feature
+  /// slide along the input, sharp there already (slidingVertex_).
   std::vector<char> keptMoves(const Judgement &judged) {
     const SplitPlan &plan = moves_.plan();
     const std::size_t count = plan.inserted.size(), first = moves_.firstInserted();
