@@ -693,15 +693,15 @@ class EvidenceGuard {
   std::vector<char> keptMoves(const Judgement &judged) {
     const SplitPlan &plan = moves_.plan();
     const std::size_t count = plan.inserted.size(), first = moves_.firstInserted();
-    std::vector<char> kept(count, 0), lifts(count, 0);
+    std::vector<char> kept(count, 0), lifting(count, 0);
     slidingVertex_.assign(count, 0);
     retreatFirst_.assign(m_.vert.size(), 0);
     const auto sharpAlready = [&](std::size_t k) { return judged.alreadySharp[featureOf_[k]]; };
     for (std::size_t k = 0; k < count; ++k) {
       if (m_.vert[first + k].IsD()) continue;
       // Not moved (lift -1): placement left it, nothing to cut back there.
-      lifts[k] = judged.lifts[k] >= 0 && !mostlyAlreadySharp(judged.lifts[k], opt_);
-      kept[k] = (sharpAlready(k) ? lifts[k] : !judged.weak[featureOf_[k]]) && !vertexIsWeak(k);
+      lifting[k] = judged.lifts[k] >= 0 && !mostlyAlreadySharp(judged.lifts[k], opt_);
+      kept[k] = (sharpAlready(k) ? lifting[k] : !judged.weak[featureOf_[k]]) && !vertexIsWeak(k);
     }
     for (const SplitFace &face : plan.faces) {
       const int corner = face.centerVertex;
@@ -709,11 +709,11 @@ class EvidenceGuard {
           vertexIsWeak(corner))
         continue;
       for (const int e : face.edgeVertex)
-        if (e >= 0 && sharpAlready(e) && lifts[e] && kept[e]) kept[corner] = 1;
+        if (e >= 0 && sharpAlready(e) && lifting[e] && kept[e]) kept[corner] = 1;
     }
     for (std::size_t k = 0; k < count; ++k) {
       if (m_.vert[first + k].IsD() || !sharpAlready(k)) continue;
-      slidingVertex_[k] = !kept[k] && !lifts[k];
+      slidingVertex_[k] = !kept[k] && !lifting[k];
       retreatFirst_[first + k] = kept[k];
     }
     return kept;

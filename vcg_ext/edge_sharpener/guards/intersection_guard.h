@@ -308,13 +308,11 @@ class IntersectionGuard {
       const int lv = feasibleLevel(v);
       const double d =
           (positionOf(&m_.vert[v]) - Vec3::Construct(moves_.storedRest(v))).SquaredNorm();
-      const bool first = firstToRetreat(v), bestFirst = best != kNone && firstToRetreat(best);
-      const bool better = best == kNone               ? true
-                          : lv != bestLevel           ? lv > bestLevel
-                          : first != bestFirst        ? first
-                          : score_[v] != score_[best] ? score_[v] > score_[best]
-                          : d != bestDisplacement     ? d < bestDisplacement
-                                                      : v < best;
+      const bool better = lv != bestLevel                             ? lv > bestLevel
+                          : firstToRetreat(v) != firstToRetreat(best) ? firstToRetreat(v)
+                          : score_[v] != score_[best]                 ? score_[v] > score_[best]
+                          : d != bestDisplacement                     ? d < bestDisplacement
+                                                                      : v < best;
       if (better) best = v, bestLevel = lv, bestDisplacement = d;
     });
     return {best, bestLevel};
