@@ -86,7 +86,7 @@ NOTES = """What it found (diagnosed by hand, 2026-11-29, first run at 9d606fa):
   spacings off their planes (nine in ten), the range of marching cubes of axis-aligned shapes
   (lblock by UMR 1%: 0.0024; cross_prism: 0.0043), which must not count as exact.
 - So on an alpha wrap the default gains where the wrap cut concave edges and harms where it
-  kept designed blends; the README says so (Known limits).
+  kept designed blends; the README says so.
 """
 
 
