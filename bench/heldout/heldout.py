@@ -79,11 +79,12 @@ class Table:
         self.title, self.args = title, args
         self.sharpener = os.path.join(args.build, "apps", "edge-sharpener")
         self.tool = os.path.join(args.build, "apps", "mesh-distance")
-        self.rows, self.worse = [], []
+        self.rows, self.worse, self.skipped = [], [], 0
         self.factors = {"tuning": [], "validation": []}
 
     def skip(self, name, half, why):
         self.rows.append(f"| {name} | {half} | {why} | | |")
+        self.skipped += 1
 
     def make_and_measure(self, name, half, made, reference, make):
         """Makes `made` by make() ("" or why not) unless it exists, then measures it."""
@@ -121,8 +122,10 @@ class Table:
             if fs:
                 lines.append(f"{h}: geometric means max ×{families._gmean([f[0] for f in fs]):.2f}"
                              f" / RMS ×{families._gmean([f[1] for f in fs]):.2f} over {len(fs)}")
-        lines.append(f"worse: {len(self.worse)} of {len(self.rows)}"
-                     + (f" ({', '.join(self.worse)})" if self.worse else ""))
+        measured = len(self.rows) - self.skipped
+        lines.append(f"worse: {len(self.worse)} of {measured}"
+                     + (f" ({', '.join(self.worse)})" if self.worse else "")
+                     + (f"; {self.skipped} not made or refused" if self.skipped else ""))
         return "\n".join(lines)
 
 
