@@ -61,7 +61,7 @@ NOTES = """What it found (diagnosed by hand, 2026-11-29, first run at 9d606fa):
   squared off: 0.494% -> 0.833%), bevelled_block at 1% (max +6%, RMS down 0.042% -> 0.018%),
   ADIS16480 at 0.5% (its bevelled housing, as with scikit-image's marching cubes) and
   octa-flower17k at 0.5% (the petals' rounded tips, as with Open3D's Poisson).
-- Alpha wrapping made 9 of 19 worse. The wrap lies on the offset surface, `offset` outside the
+- Alpha wrapping made 9 of 20 worse. The wrap lies on the offset surface, `offset` outside the
   input: a convex edge there is a cylinder of that radius, which the wrap's refinement samples,
   so convex edges come back sharp to within the offset (the input's max on cube, pyramid,
   wedge, bevelled_block and finished_hexprism is 0.0336%, the offset itself), and so do the
@@ -88,7 +88,7 @@ NOTES = """What it found (diagnosed by hand, 2026-11-29, first run at 9d606fa):
   the exactness test tell a wrap apart: its median feature's samples lie 0.0014-0.0085
   spacings off their planes (nine in ten), the range of marching cubes of axis-aligned shapes
   (lblock by UMR 1%: 0.0024; cross_prism: 0.0043), which must not count as exact.
-  Limited to meshes not sampled exactly, the rule left the wrap 2 of 19 worse (plate_holes;
+  Limited to meshes not sampled exactly, the rule left the wrap 2 of 20 worse (plate_holes;
   the tube, which counts as exact) and cost the tuning half only cross_prism by UMR 2%
   (0.761% -> 0.955%), but on the validation half lblock by UMR 2% went back to its input
   (0.184% -> 0.904%): a grid resolves an axis-aligned shape's convex edges by alignment.
