@@ -1,11 +1,13 @@
 // edge-sharpener: command-line front end of the Edge-Sharpener core.
 //
 //   edge-sharpener IN OUT [options of the option table] [--detect-only] [--json]
-//                         [--reference EXACT]
+//                         [--reference EXACT] [--sharp-edges EDGES.obj]
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -15,6 +17,7 @@
 #include "capacity_hint.h"
 #include "edge_sharpener/edge_sharpener.h"
 #include "edge_sharpener/option_table.h"
+#include "edge_sharpener/restored_edges.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "mesh_distance.h"
 #include "mesh_io.h"
@@ -25,7 +28,7 @@ namespace es = edge_sharpener;
 namespace {
 
 struct CliOptions {
-  std::string input, output, reference;
+  std::string input, output, reference, sharpEdges;
   bool detectOnly = false, json = false, quiet = false;
   /// One slot per row of the option table: the value given on the command
   /// line (numbers and flags as doubles, choices by name), and whether it was.
@@ -112,9 +115,50 @@ nlohmann::json distanceJson(const es::DistanceReport &d) {
           {"reference_diagonal", d.referenceDiagonal}};
 }
 
+/// Writes the restored sharp edges (restoredEdges: the output edges joining
+/// two vertices placed on a sharp edge or corner) as OBJ polylines: their
+/// vertices, in the output's order, and one line element per edge. Other
+/// tools read them as feature lines (a remesher's protected edges, Blender's
+/// OBJ import). \return the number of edges written.
+std::size_t writeSharpEdges(const es::Mesh &m, const std::vector<std::uint8_t> &restored,
+                            const std::string &path) {
+  const auto edges = es::restoredEdges(m, restored);
+  std::vector<std::uint32_t> objIndex(m.vert.size(), 0);  // 1-based; 0: not written
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path);
+  out << "# Edge-Sharpener: the " << edges.size() << " restored sharp edges\n";
+  out.precision(9);
+  std::uint32_t next = 0;
+  for (const auto &edge : edges)
+    for (const std::uint32_t v : edge)
+      if (objIndex[v] == 0) objIndex[v] = ++next;
+  // vertices in the order of their output index, so the file follows the mesh
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t v = 0; v < objIndex.size(); ++v)
+    if (objIndex[v]) order.push_back(v);
+  next = 0;
+  for (const std::uint32_t v : order) {
+    objIndex[v] = ++next;
+    const auto &p = m.vert[v].cP();
+    out << "v " << p[0] << " " << p[1] << " " << p[2] << "\n";
+  }
+  for (const auto &[a, b] : edges) out << "l " << objIndex[a] << " " << objIndex[b] << "\n";
+  if (!out.flush()) throw std::runtime_error("cannot write " + path);
+  return edges.size();
+}
+
 int run(const CliOptions &cli) {
   if (sameFile(cli.input, cli.output))
     throw std::runtime_error("output would overwrite the input file " + cli.input);
+  if (!cli.sharpEdges.empty()) {
+    if (cli.detectOnly)
+      throw std::runtime_error("--sharp-edges needs sharpening: --detect-only restores none");
+    if (sameFile(cli.input, cli.sharpEdges))
+      throw std::runtime_error("--sharp-edges would overwrite the input file " + cli.input);
+    if (std::filesystem::path(cli.sharpEdges).lexically_normal() ==
+        std::filesystem::path(cli.output).lexically_normal())
+      throw std::runtime_error("--sharp-edges and the output are the same file");
+  }
   es::io::returnLargeBlocksToTheSystem();  // see capacity_hint.h
   es::Mesh m;
   if (!cli.detectOnly) es::io::reserveForSharpening(cli.input, m);  // see capacity_hint.h
@@ -135,11 +179,25 @@ int run(const CliOptions &cli) {
   constexpr int kProgressFaces = 200000;  // report stages on long runs only
   if (!cli.quiet && m.FN() >= kProgressFaces) opt.progress = stderrProgress;
 
+  // --sharp-edges: the attribute sharpen() fills when it is there (restored_edges.h).
+  using Allocator = vcg::tri::Allocator<es::Mesh>;
+  if (!cli.sharpEdges.empty())
+    Allocator::AddPerVertexAttribute<std::uint8_t>(m, es::kRestoredVertexAttribute);
+
   const auto start = std::chrono::steady_clock::now();
   const es::SharpenReport report =
       cli.detectOnly ? es::detectChamfers(m, opt) : es::sharpen(m, opt);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::optional<std::size_t> sharpEdgeCount;
+  if (!cli.sharpEdges.empty()) {
+    auto handle = Allocator::FindPerVertexAttribute<std::uint8_t>(m, es::kRestoredVertexAttribute);
+    std::vector<std::uint8_t> restored(m.vert.size());
+    for (std::size_t v = 0; v < m.vert.size(); ++v) restored[v] = handle[v];
+    Allocator::DeletePerVertexAttribute(m, handle);
+    sharpEdgeCount = writeSharpEdges(m, restored, cli.sharpEdges);
+  }
 
   namespace mask = vcg::tri::io;
   int saveMask = inputAttributes & mask::Mask::IOM_VERTCOLOR;  // the input's vertex colours
@@ -156,9 +214,12 @@ int run(const CliOptions &cli) {
     j["output_file"] = cli.output;
     if (before)
       j["distance"] = {{"before", distanceJson(*before)}, {"after", distanceJson(*after)}};
+    if (sharpEdgeCount) j["sharp_edges"] = {{"file", cli.sharpEdges}, {"edges", *sharpEdgeCount}};
     std::cout << j.dump(2) << "\n";
   } else if (!cli.quiet) {
     std::cout << es::formatReport(report) << "time: " << seconds << " s\n";
+    if (sharpEdgeCount)
+      std::cout << "sharp edges: " << *sharpEdgeCount << " written to " << cli.sharpEdges << "\n";
     if (before) {
       std::printf("distance to %s (%% of its bbox diagonal %.4g):\n", cli.reference.c_str(),
                   before->referenceDiagonal);
@@ -191,6 +252,9 @@ int main(int argc, char **argv) {
   app.add_option("--reference", cli.reference,
                  "exact shape: print the two-sided (Metro) distance to it before and after")
       ->check(CLI::ExistingFile);
+  app.add_option("--sharp-edges", cli.sharpEdges,
+                 "also write the restored sharp edges to this OBJ file, as line elements "
+                 "(feature lines for a remesher or a modeller)");
   app.add_flag("-q,--quiet", cli.quiet, "print nothing on success");
   CLI11_PARSE(app, argc, argv);
   try {

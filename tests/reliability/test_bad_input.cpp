@@ -8,16 +8,19 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "edge_sharpener/edge_sharpener.h"
+#include "edge_sharpener/restored_edges.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "mesh_io.h"
 #include "reliability/invariants.h"
@@ -307,6 +310,114 @@ TEST(ReliabilityUnusualInput, CliKeepsAPlysVertexColours) {
     EXPECT_EQ(v.cC(), it->second);
   }
   EXPECT_GT(unmoved, std::size_t(m.vn) / 2);
+}
+
+// --sharp-edges writes the restored sharp edges as OBJ lines: on a marching-cubes
+// cube they run along the cube's twelve edges, and they are the edges the core
+// reports for the same input (restoredEdges).
+TEST(ReliabilityUnusualInput, CliWritesTheRestoredSharpEdges) {
+  const fs::path dir = scratchDir("sharp-edges");
+  const std::string generated = std::string(EDGE_SHARPENER_SOURCE_DIR) + "/test_meshes/generated/";
+  const fs::path input = dir / "cube.ply", output = dir / "out.ply", edges = dir / "edges.obj";
+  fs::copy_file(generated + "cube_mc2.ply", input);
+  const RunResult r = run(std::string("'") + EDGE_SHARPENER_CLI + "' --quiet '" + input.string() +
+                              "' '" + output.string() + "' --sharp-edges '" + edges.string() + "'",
+                          dir / "stderr.txt");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  ASSERT_TRUE(fs::exists(output));
+
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 2>> lines;
+  std::ifstream obj(edges);
+  for (std::string kind; obj >> kind;) {
+    if (kind == "v") {
+      std::array<double, 3> p{};
+      obj >> p[0] >> p[1] >> p[2];
+      points.push_back(p);
+    } else if (kind == "l") {
+      std::array<std::size_t, 2> l{};
+      obj >> l[0] >> l[1];
+      lines.push_back(l);
+    } else {
+      obj.ignore(std::numeric_limits<std::streamsize>::max(), '\n');  // a comment
+    }
+  }
+  ASSERT_FALSE(lines.empty());
+
+  // The same input sharpened in process: the core's restored edges.
+  es::Mesh m;
+  es::io::loadMesh(input.string(), m);
+  vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m);
+  auto h = vcg::tri::Allocator<es::Mesh>::AddPerVertexAttribute<std::uint8_t>(
+      m, es::kRestoredVertexAttribute);
+  es::sharpen(m, es::SharpenOptions{});
+  std::vector<std::uint8_t> restored(m.vert.size());
+  for (std::size_t v = 0; v < m.vert.size(); ++v) restored[v] = h[v];
+  vcg::tri::Allocator<es::Mesh>::DeletePerVertexAttribute(m, h);
+  EXPECT_EQ(lines.size(), es::restoredEdges(m, restored).size());
+
+  // Every point lies on one of the reference cube's edges (two of its faces),
+  // every line joins two points of one edge, and each of the twelve has some.
+  es::Mesh cube;
+  es::io::loadMesh(generated + "cube_reference.ply", cube);
+  vcg::tri::UpdateBounding<es::Mesh>::Box(cube);
+  const double tolerance = 1e-3 * cube.bbox.Diag();  // a twentieth of the cell (2% of it)
+  const auto facesOf = [&](const std::array<double, 3> &p) {
+    std::array<int, 3> side{};  // -1 / +1 on the box's low / high face of each axis, else 0
+    for (int c = 0; c < 3; ++c) {
+      if (std::abs(p[c] - cube.bbox.min[c]) <= tolerance) side[c] = -1;
+      if (std::abs(p[c] - cube.bbox.max[c]) <= tolerance) side[c] = 1;
+    }
+    return side;
+  };
+  std::vector<char> used(points.size(), 0);
+  std::map<std::array<int, 3>, int> linesPerEdge;
+  for (const auto &[a, b] : lines) {
+    ASSERT_TRUE(a >= 1 && a <= points.size() && b >= 1 && b <= points.size());
+    used[a - 1] = used[b - 1] = 1;
+    const auto sa = facesOf(points[a - 1]), sb = facesOf(points[b - 1]);
+    std::array<int, 3> common{};
+    int shared = 0;
+    for (int c = 0; c < 3; ++c)
+      if (sa[c] != 0 && sa[c] == sb[c]) common[c] = sa[c], ++shared;
+    EXPECT_GE(shared, 2) << "a line off the cube's edges";
+    if (shared == 2) ++linesPerEdge[common];
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    EXPECT_TRUE(used[i]) << "point " << i + 1 << " on no line";
+    const auto s = facesOf(points[i]);
+    EXPECT_GE(std::count_if(s.begin(), s.end(), [](int x) { return x != 0; }), 2)
+        << "point " << i + 1 << " off the cube's edges";
+  }
+  EXPECT_EQ(linesPerEdge.size(), 12u);
+}
+
+// --sharp-edges needs a sharpening and a file of its own: refused before
+// anything is written.
+TEST(ReliabilityBadInput, CliSharpEdgesNeedSharpeningAndTheirOwnFile) {
+  const fs::path dir = scratchDir("sharp-edges-refused");
+  const fs::path input = dir / "cube.ply", output = dir / "out.ply";
+  fs::copy_file(std::string(EDGE_SHARPENER_SOURCE_DIR) + "/test_meshes/generated/cube_mc2.ply",
+                input);
+  const std::string bytes = readBytes(input.string());
+  const std::string cli = std::string("'") + EDGE_SHARPENER_CLI + "' '" + input.string() + "' '" +
+                          output.string() + "' --sharp-edges ";
+  const struct {
+    std::string arguments, message;
+  } cases[] = {
+      {"'" + (dir / "e.obj").string() + "' --detect-only", "needs sharpening"},
+      {"'" + output.string() + "'", "the output are the same file"},
+      {"'" + input.string() + "'", "overwrite the input"},
+      {"'" + (dir / "missing" / "e.obj").string() + "'", "cannot write"},
+  };
+  for (const auto &c : cases) {
+    const RunResult r = run(cli + c.arguments, dir / "stderr.txt");
+    EXPECT_EQ(r.exitCode, 1) << c.arguments;
+    EXPECT_NE(r.stderrText.find(c.message), std::string::npos) << r.stderrText;
+    EXPECT_FALSE(fs::exists(output)) << c.arguments;
+    EXPECT_FALSE(fs::exists(dir / "e.obj")) << c.arguments;
+    EXPECT_EQ(readBytes(input.string()), bytes);
+  }
 }
 
 // Colours as floats in [0, 1] (some writers), alpha absent: read as bytes,
