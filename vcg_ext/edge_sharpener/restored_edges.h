@@ -1,8 +1,9 @@
-// The sharp edges a sharpening restored, for callers that shade or select
-// them (Blender's Mark Sharp, the Python report): the output vertices moved
-// onto a sharp edge or corner, and the output edges joining two of them (the
-// restored feature lines; an inserted vertex joins the next one along its
-// feature and a corner's vertex the features running into it).
+// The sharp edges a sharpening restored, for callers that shade, select or
+// write them (Blender's Mark Sharp, the Python report, the CLI's --sharp-edges
+// file): the output vertices moved onto a sharp edge or corner, and the output
+// edges joining two of them (the restored feature lines; an inserted vertex
+// joins the next one along its feature and a corner's vertex the features
+// running into it).
 #pragma once
 
 #include <vcg/complex/complex.h>
