@@ -123,21 +123,17 @@ nlohmann::json distanceJson(const es::DistanceReport &d) {
 std::size_t writeSharpEdges(const es::Mesh &m, const std::vector<std::uint8_t> &restored,
                             const std::string &path) {
   const auto edges = es::restoredEdges(m, restored);
-  std::vector<std::uint32_t> objIndex(m.vert.size(), 0);  // 1-based; 0: not written
+  std::vector<std::uint32_t> objIndex(m.vert.size(), 0);  // 1-based; 0: on no edge
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path);
   out << "# Edge-Sharpener: the " << edges.size() << " restored sharp edges\n";
   out.precision(9);
-  std::uint32_t next = 0;
   for (const auto &edge : edges)
-    for (const std::uint32_t v : edge)
-      if (objIndex[v] == 0) objIndex[v] = ++next;
-  // vertices in the order of their output index, so the file follows the mesh
-  std::vector<std::uint32_t> order;
-  for (std::uint32_t v = 0; v < objIndex.size(); ++v)
-    if (objIndex[v]) order.push_back(v);
-  next = 0;
-  for (const std::uint32_t v : order) {
+    for (const std::uint32_t v : edge) objIndex[v] = 1;
+  // The edges' vertices in the order of their output index: the file follows the mesh.
+  std::uint32_t next = 0;
+  for (std::size_t v = 0; v < objIndex.size(); ++v) {
+    if (objIndex[v] == 0) continue;
     objIndex[v] = ++next;
     const auto &p = m.vert[v].cP();
     out << "v " << p[0] << " " << p[1] << " " << p[2] << "\n";
