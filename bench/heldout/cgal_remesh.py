@@ -132,8 +132,11 @@ def table(sampler, refs, half, work, args):
                                  text=True)
             if run.returncode == 0:
                 return ""
-            return run.stderr.strip() or f"cgal-remesh stopped by signal {-run.returncode}" \
-                if run.returncode < 0 else f"cgal-remesh exited with {run.returncode}"
+            if run.stderr.strip():
+                return run.stderr.strip()
+            if run.returncode < 0:
+                return f"cgal-remesh stopped by signal {-run.returncode}"
+            return f"cgal-remesh exited with {run.returncode}"
 
         table.make_and_measure(name, half.get(name, "?"), made, ref, make)
     return table.text()
