@@ -52,7 +52,7 @@ another shape."""
 NOTES = """What it found (diagnosed by hand):
 
 - Written the day the rule "bulges beyond a convex edge or corner go behind its planes" was
-  added (2026-11-28, docs/results.md), to see whether it holds at other scales. The same scans
+  added (2026-11-28, docs/auto-method-decisions.md), to see whether it holds at other scales. The same scans
   sharpened by the build before that rule: at 0.7% tuning max x1.02 / RMS x1.12, validation
   x1.00 / x1.15, worse 1 of 20 (plate_holes); at 1.4% tuning x1.00 / x1.11, validation
   x1.00 / x1.12, none worse. With it, the tables above.

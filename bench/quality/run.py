@@ -28,7 +28,7 @@ and are skipped with a note without it.
                        [--cache DIR] [--refresh] [--distance-samples N]
 
 A worse output of the default method is measured again with DENSE_SAMPLES, with its input
-(the sampled max only under-reads; docs/results.md, "How exact the sampled max is").
+(the sampled max only under-reads; docs/auto-method-decisions.md, "How exact the sampled max is").
 """
 import argparse
 import concurrent.futures

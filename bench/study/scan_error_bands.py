@@ -7,7 +7,7 @@ Samples both surfaces evenly (Open3D), measures each sample's distance to the ot
 to the reference's sharp edges (dihedral angle above --angle degrees), and prints, per band of
 that edge distance (in % of the reference's diagonal): the band's share of the reference's area,
 its share of the two-sided squared error and its largest distance. Written for the depth scans
-of the quality benchmark (docs/results.md: "A rough input's planar faces are flattened"), whose
+of the quality benchmark (docs/auto-method-decisions.md: "A rough input's planar faces are flattened"), whose
 fusion bulges the faces for a few voxels beside every edge. Needs Debian's python3-open3d.
 """
 import argparse

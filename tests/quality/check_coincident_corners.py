@@ -9,8 +9,8 @@ refused to move the middle row onto a face's plane (such a face cannot keep faci
 faced: it faced no way), and the row stayed, 0.43 cells off both faces. A face without area no
 longer refuses (extended/projection.h: moveKeepsFaces). Asserted: both inputs made, sharpened
 and measured, none made worse (families.is_worse), and each max error lowered by at least its
-floor, set between the factors before the change and after it (docs/results.md has the
-figures).
+floor, set between the factors before the change and after it (docs/auto-method-decisions.md
+has the figures).
 """
 import checks  # first: puts bench/quality on sys.path
 

@@ -9,7 +9,7 @@ stay where it was: a dent at the corner. It now goes onto the plane of another r
 where that leaves it no farther from any of its planes
 (extended/projection.h). Asserted: all four inputs made, sharpened and measured, none made
 worse (families.is_worse), and each max error lowered by at least its floor, set between the
-factors before the change and after it (docs/results.md has the figures).
+factors before the change and after it (docs/auto-method-decisions.md has the figures).
 """
 import checks  # first: puts bench/quality on sys.path
 
