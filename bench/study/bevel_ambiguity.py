@@ -1,0 +1,140 @@
+#!/usr/bin/env python3
+"""How alike marching cubes makes a sharp edge and a designed bevel (issue 20's information limit).
+
+A sharp, axis-aligned 90-degree edge and the same edge cut by a designed 45-degree bevel are
+sampled by marching cubes over an exact signed distance field, the way MeshLab's Uniform Mesh
+Resampling and the project's own marching cubes sample a shape. Along an axis-aligned edge the
+field does not change, so each mesh is its marching-squares contour extruded along the edge: the
+study works on the cross-section, exactly.
+
+For each phase of the grid against the edge (where the edge falls inside its cell, in x and in z),
+it finds the widest bevel, among legs of 0.05 to 3 cells, whose marching-cubes contour lies within
+a tolerance of the sharp edge's (the same contour to rounding, 1e-6 cells; and 0.05 cells, the
+distance within which the default method takes a sample to lie on its plane), and prints:
+- the bevel's leg (cut along each face) and width (across), in cells;
+- the Hausdorff distance between the two marching-cubes contours (what a sharpener can see);
+- the Hausdorff distance between the two true shapes (the bevel's depth, leg / sqrt 2);
+- the input's own max error against each true shape: a sharpener that restores the edge lowers
+  the first to about zero and raises the second to the bevel's depth; one that leaves the mesh
+  keeps both. Where the two inputs are the same mesh, no rule does both.
+
+All distances in cells (the grid's spacing; a marching-cubes mesh's median edge length on a flat
+face is about one cell). Run: /usr/bin/python3 bench/study/bevel_ambiguity.py
+Needs Debian's python3-numpy and python3-skimage (scikit-image's find_contours is marching
+squares with linear interpolation along the grid's edges).
+"""
+import argparse
+import math
+
+import numpy as np
+from skimage import measure
+
+
+def region_corners(edge_x, edge_z, leg):
+    """The cross-section's boundary near the edge: {x <= edge_x, z <= edge_z}, cut by
+    x + z <= edge_x + edge_z - leg when leg > 0, as a polyline from far down the x face,
+    over the edge, to far along the z face."""
+    far = 50.0
+    if leg <= 0:
+        return np.array([[edge_x, edge_z - far], [edge_x, edge_z], [edge_x - far, edge_z]])
+    return np.array([[edge_x, edge_z - far], [edge_x, edge_z - leg], [edge_x - leg, edge_z],
+                     [edge_x - far, edge_z]])
+
+
+def point_segment_distance(p, a, b):
+    """Distances from points p (n x 2) to the segment a-b."""
+    ab = b - a
+    t = np.clip(((p - a) @ ab) / (ab @ ab), 0.0, 1.0)
+    return np.linalg.norm(p - (a + t[:, None] * ab), axis=1)
+
+
+def polyline_distance(p, poly):
+    """Distances from points p (n x 2) to a polyline."""
+    return np.min([point_segment_distance(p, poly[i], poly[i + 1]) for i in range(len(poly) - 1)],
+                  axis=0)
+
+
+def signed_distance(x, z, edge_x, edge_z, leg):
+    """Exact signed distance to the convex cross-section (negative inside)."""
+    planes = [(np.array([1.0, 0.0]), edge_x), (np.array([0.0, 1.0]), edge_z)]
+    if leg > 0:
+        s = 1.0 / math.sqrt(2.0)
+        planes.append((np.array([s, s]), (edge_x + edge_z - leg) * s))
+    p = np.stack([x.ravel(), z.ravel()], axis=1)
+    inside = np.max([p @ n - d for n, d in planes], axis=0)
+    outside = polyline_distance(p, region_corners(edge_x, edge_z, leg))
+    return np.where(inside <= 0, inside, outside).reshape(x.shape)
+
+
+def contour(edge_x, edge_z, leg, half=6):
+    """The marching-squares contour of the cross-section on the unit grid, in grid units."""
+    xs = np.arange(-half, half + 1, dtype=float)
+    x, z = np.meshgrid(xs, xs, indexing="ij")
+    lines = measure.find_contours(signed_distance(x, z, edge_x, edge_z, leg), 0.0)
+    line = max(lines, key=len)
+    return line - half  # find_contours returns (row, column) = (x, z) indices
+
+
+def densify(poly, step=0.01):
+    """Points along a polyline, at most `step` apart."""
+    out = []
+    for a, b in zip(poly[:-1], poly[1:]):
+        n = max(1, int(math.ceil(np.linalg.norm(b - a) / step)))
+        out.append(a + (b - a) * (np.arange(n)[:, None] / n))
+    out.append(poly[-1:])
+    return np.concatenate(out)
+
+
+def near_edge(points, edge_x, edge_z, radius):
+    """The points within `radius` of the edge (both contours run on to the grid's border)."""
+    return points[np.linalg.norm(points - [edge_x, edge_z], axis=1) <= radius]
+
+
+def hausdorff(a, b, edge_x, edge_z, radius=3.0):
+    """Two-sided Hausdorff distance between two polylines, over their parts near the edge."""
+    pa = near_edge(densify(a), edge_x, edge_z, radius)
+    pb = near_edge(densify(b), edge_x, edge_z, radius)
+    return max(polyline_distance(pa, b).max(), polyline_distance(pb, a).max())
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--phases", default="0.1,0.3,0.5,0.7,0.9",
+                    help="where the edge falls in its cell, in x and in z (fractions of a cell)")
+    args = ap.parse_args()
+    phases = [float(p) for p in args.phases.split(",")]
+    legs = np.round(np.arange(0.05, 3.0001, 0.05), 2)
+    print("| edge phase x, z | tolerance, cells | widest bevel: leg / width, cells "
+          "| marching cubes apart, cells | true shapes apart (bevel's depth), cells "
+          "| input's max error against the sharp shape / the bevelled one, cells |")
+    print("|---|---|---|---|---|---|")
+    identical = []  # (width, input's error against the bevel, the bevel's depth)
+    for px in phases:
+        for pz in phases:
+            sharp_mc = contour(px, pz, 0.0)
+            sharp = region_corners(px, pz, 0.0)
+            seen = {leg: hausdorff(sharp_mc, contour(px, pz, leg), px, pz) for leg in legs}
+            for tolerance in (1e-6, 0.05):
+                alike = [leg for leg in legs if seen[leg] <= tolerance]
+                if not alike:
+                    print(f"| {px:g}, {pz:g} | {tolerance:g} | none | | | |")
+                    continue
+                leg = max(alike)
+                bevelled = region_corners(px, pz, leg)
+                depth = hausdorff(sharp, bevelled, px, pz)
+                against_bevel = hausdorff(sharp_mc, bevelled, px, pz)
+                if tolerance < 0.01:
+                    identical.append((leg * math.sqrt(2), against_bevel, depth))
+                print(f"| {px:g}, {pz:g} | {tolerance:g} | {leg:.2f} / {leg * math.sqrt(2):.2f} "
+                      f"| {seen[leg]:.3f} | {depth:.3f} "
+                      f"| {hausdorff(sharp_mc, sharp, px, pz):.3f} / "
+                      f"{against_bevel:.3f} |")
+    widths = sorted(w for w, _, _ in identical)
+    worse = [(after / before) for _, before, after in identical if after > 1.02 * before]
+    print(f"\nOver {len(identical)} phases, the widest bevel whose marching cubes are the sharp "
+          f"edge's to rounding is {widths[0]:.2f}-{widths[-1]:.2f} cells wide (median "
+          f"{widths[len(widths) // 2]:.2f}); restoring the edge raises the bevelled shape's max "
+          f"error at {len(worse)} of them (by x{min(worse):.2f} to x{max(worse):.2f}).")
+
+if __name__ == "__main__":
+    main()
