@@ -32,6 +32,15 @@ import math
 import numpy as np
 from skimage import measure
 
+# The benchmark's "worse" by the max error (bench/quality/families.py: WORSE_MAX).
+WORSE_MAX = 0.02
+# How far apart two marching-cubes meshes may lie and still be taken for one, in cells: to
+# rounding, and the 0.05 sample spacings within which the default takes a sample to lie on its
+# plane.
+TOLERANCES = (1e-6, 0.05)
+# Errors are floored here (cells) where a ratio divides by them: a bevel sampled exactly.
+ERROR_FLOOR = 1e-3
+
 
 def region_corners(edge_x, edge_z, leg):
     """The cross-section's boundary near the edge: {x <= edge_x, z <= edge_z}, cut by
@@ -112,13 +121,14 @@ def main():
           "| input's max error against the sharp shape / the bevelled one, cells "
           "| best gain on the sharp shape without harm to the bevelled one |")
     print("|---|---|---|---|---|---|---|")
-    alike_rows = {1e-6: [], 0.05: []}  # (width, input's error against the bevel, depth, ceiling)
+    alike_rows = {t: [] for t in TOLERANCES}  # (width, error against the bevel, depth, ceiling)
     for px in phases:
         for pz in phases:
             sharp_mc = contour(px, pz, 0.0)
             sharp = region_corners(px, pz, 0.0)
+            against_sharp = hausdorff(sharp_mc, sharp, px, pz)
             seen = {leg: hausdorff(sharp_mc, contour(px, pz, leg), px, pz) for leg in legs}
-            for tolerance in (1e-6, 0.05):
+            for tolerance in TOLERANCES:
                 alike = [leg for leg in legs if seen[leg] <= tolerance]
                 if not alike:
                     print(f"| {px:g}, {pz:g} | {tolerance:g} | none | | | | |")
@@ -127,20 +137,18 @@ def main():
                 bevelled = region_corners(px, pz, leg)
                 depth = hausdorff(sharp, bevelled, px, pz)
                 against_bevel = hausdorff(sharp_mc, bevelled, px, pz)
-                against_sharp = hausdorff(sharp_mc, sharp, px, pz)
-                ceiling = against_sharp / max(depth - 1.02 * against_bevel, 1e-3 * depth)
-                ceiling = min(ceiling, 1e3)
+                allowed = (1 + WORSE_MAX) * against_bevel
+                ceiling = min(against_sharp / max(depth - allowed, ERROR_FLOOR * depth), 1e3)
                 alike_rows[tolerance].append((leg * math.sqrt(2), against_bevel, depth, ceiling))
                 print(f"| {px:g}, {pz:g} | {tolerance:g} | {leg:.2f} / {leg * math.sqrt(2):.2f} "
                       f"| {seen[leg]:.3f} | {depth:.3f} "
                       f"| {against_sharp:.3f} / {against_bevel:.3f} | x{ceiling:.2f} |")
     for tolerance, rows in alike_rows.items():
         widths = sorted(w for w, _, _, _ in rows)
-        # An input sampled exactly (error 0) counts as 0.001 cells off, as the benchmark floors
-        # its errors.
-        worse = [after / max(before, 1e-3) for _, before, after, _ in rows
-                 if after > 1.02 * before]
-        ceilings = sorted(c for _, before, after, c in rows if after > 1.02 * before)
+        harmed = [(before, after, c) for _, before, after, c in rows
+                  if after > (1 + WORSE_MAX) * before]
+        worse = [after / max(before, ERROR_FLOOR) for before, after, _ in harmed]
+        ceilings = sorted(c for _, _, c in harmed)
         print(f"\nMeshes within {tolerance:g} cells: over {len(rows)} places of the edge, the "
               f"widest bevel is {widths[0]:.2f}-{widths[-1]:.2f} cells wide (median "
               f"{widths[len(widths) // 2]:.2f}); restoring the edge raises the bevelled shape's "
@@ -148,6 +156,7 @@ def main():
               f"there, without that harm, the sharp shape's max error falls at best by "
               f"x{ceilings[0]:.2f} to x{ceilings[-1]:.2f} (median "
               f"x{ceilings[len(ceilings) // 2]:.2f}).")
+
 
 if __name__ == "__main__":
     main()
