@@ -30,9 +30,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[next() % nv];
 
   auto opt = edge_sharpener::SharpenOptions::paperMethod();  // its invariants are checked
-  opt.smoothMultiplier = 1.0 + (flags & 7) * 0.5;  // 1 .. 4.5
+  opt.smoothMultiplier = 1.0 + (flags & 7) * 0.5;            // 1 .. 4.5
   opt.edgeLengthCheck = !(flags & 8);
-  opt.convexityCheck = !(flags & 16);
+  opt.paper.convexityCheck = !(flags & 16);
   opt.degenerateAngleRad = ((flags >> 5) & 3) * M_PI / 180.0;  // 0 .. 3 degrees
   es_fuzz::sharpenAndCheck(m, opt);
   return 0;

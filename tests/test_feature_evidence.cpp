@@ -108,13 +108,38 @@ TEST(FeatureEvidence, DisconnectedStripsBetweenTheSameRegionsAreSeparateFeatures
 
 TEST(FeatureEvidence, WeakWhenShortRefusedOrOffItsPlanes) {
   es::SharpenOptions opt;  // 3 vertices, half refused, 0.6 spacings off plane
-  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 10), opt));
-  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 5), opt));  // half: not most
-  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(10, 4), opt));
-  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(2, 2), opt));
-  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(1, 1, 0, /*corner=*/true), opt));
-  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(10, 10, 0.6), opt));
-  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(10, 10, 0.7), opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(feature(10, 10), opt)));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(feature(10, 5), opt)));  // half: not most
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(feature(10, 4), opt)));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(feature(2, 2), opt)));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(feature(1, 1, 0, /*corner=*/true), opt)));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(feature(10, 10, 0.6), opt)));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(feature(10, 10, 0.7), opt)));
+}
+
+// Each feature gets the verdict of the first rule it fails, in the
+// rulebook's order: on the surface, too short, shallow, across its chamfer,
+// off its planes, mostly refused.
+TEST(FeatureEvidence, TheVerdictNamesTheFirstRuleAFeatureFails) {
+  const es::SharpenOptions opt;
+  EXPECT_EQ(es::judgeFeature(feature(10, 10), opt), es::Verdict::Restored);
+  EXPECT_EQ(es::judgeFeature(feature(2, 2), opt), es::Verdict::TooShort);
+  EXPECT_EQ(es::judgeFeature(feature(2, 0, 1.0), opt), es::Verdict::TooShort);
+  es::Feature shallow = feature(10, 10);
+  shallow.flankAngleRad = 10 * M_PI / 180;
+  EXPECT_EQ(es::judgeFeature(shallow, opt), es::Verdict::ShallowAngle);
+  es::Feature across = feature(10, 10);
+  across.lineChamferAngleRad = 60 * M_PI / 180;
+  EXPECT_EQ(es::judgeFeature(across, opt), es::Verdict::LineAcrossChamfer);
+  EXPECT_EQ(es::judgeFeature(feature(10, 10, 0.7), opt), es::Verdict::OffItsPlanes);
+  EXPECT_EQ(es::judgeFeature(feature(10, 4, 0.7), opt), es::Verdict::OffItsPlanes);
+  EXPECT_EQ(es::judgeFeature(feature(10, 4), opt), es::Verdict::MostlyRefused);
+  es::Feature bevel = feature(10, 10, 0.2);
+  bevel.offPlaneMedian = 0.2;
+  EXPECT_EQ(es::judgeFeature(bevel, opt, /*exactSampling=*/true), es::Verdict::OnTheSurface);
+  EXPECT_EQ(es::countVerdicts({es::Verdict::Restored, es::Verdict::TooShort,
+                               es::Verdict::Restored})[static_cast<int>(es::Verdict::Restored)],
+            2u);
 }
 
 // A vertex whose target crosses to another sheet of the input counts as one
@@ -123,15 +148,15 @@ TEST(FeatureEvidence, AFewFarSamplesOfAnExactlySampledFeatureDoNotMakeItWeak) {
   const es::SharpenOptions opt;
   es::Feature f = feature(40, 40, /*offPlane=*/2.9);
   f.offPlaneQ90 = 0.0;  // the rest on their planes: a remesher that reprojects
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(f, opt)));
   f.offPlaneQ90 = 0.05;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(f, opt)));
   f.offPlaneQ90 = 0.2;  // a blend along it
-  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(f, opt)));
   es::SharpenOptions everyFarSample;
-  everyFarSample.onPlaneSpacings = 0;
+  everyFarSample.rules.feature.onPlaneSpacings = 0;
   f.offPlaneQ90 = 0.0;
-  EXPECT_TRUE(es::featureEvidenceIsWeak(f, everyFarSample));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(f, everyFarSample)));
 }
 
 // A sampler that rounds the samples nearest an edge (a reconstruction, a
@@ -141,18 +166,18 @@ TEST(FeatureEvidence, AFeatureMostlyOnItsPlanesIsNotWeak) {
   const es::SharpenOptions opt;  // median within 0.1 spacings, none beyond 1
   es::Feature f = feature(40, 40, /*offPlane=*/0.9);
   f.offPlaneMedian = 0.05;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(f, opt)));
   f.offPlaneMedian = 0.1;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(f, opt)));
   f.offPlaneMedian = 0.2;  // a blend along it
-  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(f, opt)));
   f.offPlaneMedian = 0.05;
   f.maxOffPlane = 1.2;  // a sample beyond a whole spacing
-  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(f, opt)));
   es::SharpenOptions off;
-  off.medianOnPlaneSpacings = 0;
+  off.rules.feature.medianOnPlaneSpacings = 0;
   f.maxOffPlane = 0.9;
-  EXPECT_TRUE(es::featureEvidenceIsWeak(f, off));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(f, off)));
 }
 
 // The line an acute edge's planes meet on moves farther with their errors
@@ -163,17 +188,17 @@ TEST(FeatureEvidence, AnAcuteEdgeMostlyOnItsPlanesIsAllowedLess) {
   es::Feature f = feature(40, 40, /*offPlane=*/0.8);
   f.offPlaneMedian = 0.05;
   f.flankAngleRad = 60 * deg;  // allows 0.87 spacings
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(f, opt)));
   f.flankAngleRad = 45 * deg;  // allows 0.71
-  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(f, opt)));
   f.maxOffPlane = 0.65;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(f, opt)));
   f.offPlaneMedian = 0.08;  // beyond 0.1 x sin 45 degrees
-  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(f, opt)));
   es::Feature corner = feature(1, 1, /*offPlane=*/0.8, /*corner=*/true);
   corner.offPlaneMedian = 0.05;
   corner.flankAngleRad = 30 * deg;  // a corner's angle is not an edge's
-  EXPECT_FALSE(es::featureEvidenceIsWeak(corner, opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(corner, opt)));
 }
 
 // A vertex of a feature kept goes back on its own evidence: a far sample,
@@ -190,7 +215,7 @@ TEST(FeatureEvidence, ALongMoveNeedsItsSamplesOnTheirPlanes) {
   EXPECT_FALSE(es::vertexEvidenceIsWeak(2.5, 0.35, corner, opt));  // pinned by three planes
   EXPECT_FALSE(es::vertexEvidenceIsWeak(2.0, 0.35, edge, opt));    // not longer than the bound
   es::SharpenOptions off = opt;
-  off.longMoveSpacings = 0;
+  off.rules.vertex.longMoveSpacings = 0;
   EXPECT_FALSE(es::vertexEvidenceIsWeak(2.5, 0.35, edge, off));
   EXPECT_TRUE(es::vertexEvidenceIsWeak(2.5, 0.7, edge, off));
 }
@@ -214,7 +239,7 @@ TEST(FeatureEvidence, AMeshIsSampledExactlyWhenItsMedianFeatureIs) {
       opt));
   EXPECT_FALSE(es::sampledExactly({}, opt));
   es::SharpenOptions off = opt;
-  off.exactSamplingSpacings = 0;
+  off.rules.mesh.exactSamplingSpacings = 0;
   EXPECT_FALSE(es::sampledExactly({feature(100, 100, 0.0)}, off));
 }
 
@@ -223,23 +248,23 @@ TEST(FeatureEvidence, AMeshIsSampledExactlyWhenItsMedianFeatureIs) {
 TEST(FeatureEvidence, OnAnExactlySampledMeshSamplesOffTheirPlanesAreTheSurface) {
   const es::SharpenOptions opt;  // on-plane: 0.05 spacings
   const es::Feature bevel = feature(40, 40, /*offPlane=*/0.2);
-  EXPECT_FALSE(es::featureEvidenceIsWeak(bevel, opt, /*exactSampling=*/false));
-  EXPECT_TRUE(es::featureEvidenceIsWeak(bevel, opt, /*exactSampling=*/true));
-  EXPECT_TRUE(es::featureEvidenceIsWeak(feature(1, 1, 0.2, /*corner=*/true), opt, true));
-  EXPECT_FALSE(es::featureEvidenceIsWeak(feature(40, 40, 0.04), opt, true));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(bevel, opt, /*exactSampling=*/false)));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(bevel, opt, /*exactSampling=*/true)));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(feature(1, 1, 0.2, /*corner=*/true), opt, true)));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(feature(40, 40, 0.04), opt, true)));
   // A sharp edge with a few samples where it meets a bevel: its median on
   // its planes, the feature stays; the far samples' own new vertices rest.
   es::Feature edge = feature(40, 40, /*offPlane=*/2.5);
   edge.offPlaneQ90 = 0.04;
   edge.offPlaneMedian = 0;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(edge, opt, true));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(edge, opt, true)));
   const bool notCorner = false;
   EXPECT_FALSE(es::vertexEvidenceIsWeak(0.5, 0.2, notCorner, opt, /*exactSampling=*/false));
   EXPECT_TRUE(es::vertexEvidenceIsWeak(0.5, 0.2, notCorner, opt, /*exactSampling=*/true));
   EXPECT_FALSE(es::vertexEvidenceIsWeak(0.5, 0.04, notCorner, opt, true));
   es::SharpenOptions off = opt;
-  off.onPlaneSpacings = 0;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(bevel, off, true));
+  off.rules.feature.onPlaneSpacings = 0;
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(bevel, off, true)));
   EXPECT_FALSE(es::vertexEvidenceIsWeak(0.5, 0.2, notCorner, off, true));
 }
 
@@ -258,11 +283,11 @@ TEST(FeatureEvidence, VerticesCrossingToAnotherSheetCountAsRefused) {
   es::SharpenOptions opt;  // most refused
   es::Feature f = feature(10, 10);
   f.crossed = 5;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(f, opt)));
   f.crossed = 6;
-  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(f, opt)));
   f.moved = 8, f.crossed = 4;  // two refused, four crossed: 60%
-  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(f, opt)));
 }
 
 // An edge whose flanks meet at a shallow angle (a gentle crease, or a knife
@@ -272,15 +297,15 @@ TEST(FeatureEvidence, WeakWhereTheFlanksMeetAtAShallowAngle) {
   const double deg = M_PI / 180;
   es::Feature f = feature(10, 10);
   f.flankAngleRad = 19 * deg;
-  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(f, opt)));
   f.flankAngleRad = 21 * deg;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(f, opt)));
   es::Feature corner = feature(1, 1, 0, /*corner=*/true);
   corner.flankAngleRad = 5 * deg;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(corner, opt));
-  opt.minFeatureAngleRad = 0;  // off
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(corner, opt)));
+  opt.rules.feature.minFeatureAngleRad = 0;  // off
   f.flankAngleRad = 1 * deg;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(f, opt)));
 }
 
 // An edge whose flanks' planes meet on a line that crosses its chamfer
@@ -290,16 +315,16 @@ TEST(FeatureEvidence, WeakWhereThePlanesLineCrossesTheChamfer) {
   es::SharpenOptions opt;  // 45 degrees
   const double deg = M_PI / 180;
   es::Feature f = feature(10, 10);
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));  // along it
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(f, opt)));  // along it
   f.lineChamferAngleRad = 44 * deg;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(f, opt)));
   f.lineChamferAngleRad = 46 * deg;
-  EXPECT_TRUE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_TRUE(es::isLeft(es::judgeFeature(f, opt)));
   es::Feature corner = feature(1, 1, 0, /*corner=*/true);
   corner.lineChamferAngleRad = 80 * deg;
-  EXPECT_FALSE(es::featureEvidenceIsWeak(corner, opt));
-  opt.maxFeatureLineChamferAngleRad = 0;  // off
-  EXPECT_FALSE(es::featureEvidenceIsWeak(f, opt));
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(corner, opt)));
+  opt.rules.feature.maxFeatureLineChamferAngleRad = 0;  // off
+  EXPECT_FALSE(es::isLeft(es::judgeFeature(f, opt)));
 }
 
 TEST(FeatureEvidence, PlanesMeetAtTheSmallerOfTheirAngles) {
@@ -341,14 +366,14 @@ TEST(FeatureEvidence, AWeakEdgeTakesItsCornerButNotTheOtherEdge) {
   features[b] = feature(3, 3);
   features[corner] = feature(1, 1, 0, true);
   es::SharpenOptions opt;
-  auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt);
-  EXPECT_FALSE(weak[a] || weak[b] || weak[corner]);
+  auto verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt);
+  EXPECT_FALSE(es::isLeft(verdict[a]) || es::isLeft(verdict[b]) || es::isLeft(verdict[corner]));
 
   features[a] = feature(4, 4, /*offPlane=*/1.0);  // a sample of strip A lies off its plane
-  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt);
-  EXPECT_TRUE(weak[a]);
-  EXPECT_TRUE(weak[corner]);
-  EXPECT_FALSE(weak[b]);
+  verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt);
+  EXPECT_EQ(verdict[a], es::Verdict::OffItsPlanes);
+  EXPECT_EQ(verdict[corner], es::Verdict::CornerOfWeakEdge);
+  EXPECT_EQ(verdict[b], es::Verdict::Restored);
 }
 
 TEST(FeatureEvidence, TooManyRefusalsLeaveTheWholeMesh) {
@@ -356,11 +381,12 @@ TEST(FeatureEvidence, TooManyRefusalsLeaveTheWholeMesh) {
   std::vector<es::Feature> features;
   const auto featureOf = t.groupAllMoved(features);
   es::SharpenOptions opt;
-  opt.maxRefusedFraction = 0.4;
-  opt.maxFeatureFallbackFraction = 1;        // strip B alone would pass
-  features[featureOf[4]] = feature(30, 10);  // 20 of 35 refused overall
-  const auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt);
-  for (char w : weak) EXPECT_TRUE(w);
+  opt.rules.mesh.maxRefusedFraction = 0.4;
+  opt.rules.feature.maxFeatureFallbackFraction = 1;  // strip B alone would pass
+  features[featureOf[4]] = feature(30, 10);          // 20 of 35 refused overall
+  const auto verdict =
+      es::featureVerdicts(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt);
+  for (es::Verdict v : verdict) EXPECT_EQ(v, es::Verdict::MeshEvidenceWeak);
 }
 
 TEST(FeatureEvidence, SmoothPartsMadeOfPlanesAreJudgedFeatureByFeature) {
@@ -368,22 +394,24 @@ TEST(FeatureEvidence, SmoothPartsMadeOfPlanesAreJudgedFeatureByFeature) {
   std::vector<es::Feature> features;
   const auto featureOf = t.groupAllMoved(features);
   es::SharpenOptions opt;
-  opt.maxRefusedFraction = 0.4;
-  opt.maxRefusedFractionSmooth = 0.6;
-  opt.maxSmoothNoiseSpacings = 0.02;
-  opt.minPlanarAreaFraction = 0.3;
-  opt.maxFeatureFallbackFraction = 1;        // every feature alone would pass
+  opt.rules.mesh.maxRefusedFraction = 0.4;
+  opt.rules.mesh.maxRefusedFractionSmooth = 0.6;
+  opt.rules.mesh.maxSmoothNoiseSpacings = 0.02;
+  opt.rules.mesh.minPlanarAreaFraction = 0.3;
+  opt.rules.feature.maxFeatureFallbackFraction = 1;  // every feature alone would pass
   features[featureOf[4]] = feature(30, 10);  // 20 of 35 refused overall: above 0.4, below 0.6
   const auto allWeak = [&](const es::SurfaceMeasures &surface) {
-    const auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/1.0, surface, opt);
-    return std::all_of(weak.begin(), weak.end(), [](char w) { return w != 0; });
+    const auto verdict =
+        es::featureVerdicts(t.plan, features, featureOf, /*lift=*/1.0, surface, opt);
+    return std::all_of(verdict.begin(), verdict.end(),
+                       [](es::Verdict v) { return v == es::Verdict::MeshEvidenceWeak; });
   };
   EXPECT_FALSE(allWeak({/*noiseSpacings=*/0.01, /*planarFraction=*/0.5}));
   EXPECT_TRUE(allWeak({/*noiseSpacings=*/0.03, /*planarFraction=*/0.5}));  // rough: a scan
   EXPECT_TRUE(allWeak({/*noiseSpacings=*/0.01, /*planarFraction=*/0.1}));  // freeform
-  opt.maxSmoothNoiseSpacings = 0;                                          // off
+  opt.rules.mesh.maxSmoothNoiseSpacings = 0;                               // off
   EXPECT_TRUE(allWeak({/*noiseSpacings=*/0.0, /*planarFraction=*/1.0}));
-  opt.maxSmoothNoiseSpacings = 0.02;
+  opt.rules.mesh.maxSmoothNoiseSpacings = 0.02;
   features[featureOf[4]] = feature(30, 5);  // 25 of 35 refused: above the smooth bound too
   EXPECT_TRUE(allWeak({/*noiseSpacings=*/0.01, /*planarFraction=*/0.5}));
 }
@@ -393,13 +421,16 @@ TEST(FeatureEvidence, MovesThatOnlySlideLeaveTheWholeMesh) {
   std::vector<es::Feature> features;
   const auto featureOf = t.groupAllMoved(features);
   es::SharpenOptions opt;  // median lift at least 0.07
-  for (char w : es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.8, kRoughSurface, opt))
-    EXPECT_FALSE(w);
-  for (char w : es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt))
-    EXPECT_TRUE(w);
-  opt.minMedianLift = 0;  // off
-  for (char w : es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt))
-    EXPECT_FALSE(w);
+  for (es::Verdict v :
+       es::featureVerdicts(t.plan, features, featureOf, /*lift=*/0.8, kRoughSurface, opt))
+    EXPECT_EQ(v, es::Verdict::Restored);
+  for (es::Verdict v :
+       es::featureVerdicts(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt))
+    EXPECT_EQ(v, es::Verdict::MeshEvidenceWeak);
+  opt.rules.mesh.minMedianLift = 0;  // off
+  for (es::Verdict v :
+       es::featureVerdicts(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt))
+    EXPECT_EQ(v, es::Verdict::Restored);
 }
 
 // A remesher casting its vertices onto the input puts them on the convex
@@ -417,48 +448,48 @@ TEST(FeatureEvidence, OnAMeshSampledExactlyOnlyTheFeaturesThatSlideAreAlreadySha
   features[a].medianLift = 0.0;  // strip A slides along the input
   features[b].medianLift = 0.8;  // strip B lifts to its edge
   es::SharpenOptions opt;        // median lift at least 0.07
-  std::vector<char> alreadySharp;
-  auto weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
-                               /*exactSampling=*/true, &alreadySharp);
-  EXPECT_TRUE(weak[a]);
-  EXPECT_FALSE(weak[b]);
-  EXPECT_FALSE(weak[corner]);
+  auto verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
+                                     /*exactSampling=*/true);
+  EXPECT_TRUE(es::isLeft(verdict[a]));
+  EXPECT_FALSE(es::isLeft(verdict[b]));
+  EXPECT_FALSE(es::isLeft(verdict[corner]));
   // Strip A is weak for sliding alone: its moves that lift are judged one by one.
-  ASSERT_EQ(alreadySharp.size(), features.size());
-  EXPECT_TRUE(alreadySharp[a]);
-  EXPECT_FALSE(alreadySharp[b] || alreadySharp[corner]);
+  ASSERT_EQ(verdict.size(), features.size());
+  EXPECT_TRUE((verdict[a] == es::Verdict::AlreadySharp));
+  EXPECT_FALSE((verdict[b] == es::Verdict::AlreadySharp) ||
+               (verdict[corner] == es::Verdict::AlreadySharp));
   features[corner].medianLift = 0.0;  // the corner slides too
-  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
-                          /*exactSampling=*/true, &alreadySharp);
-  EXPECT_TRUE(weak[corner]);
-  EXPECT_TRUE(alreadySharp[corner]);
+  verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
+                                /*exactSampling=*/true);
+  EXPECT_TRUE(es::isLeft(verdict[corner]));
+  EXPECT_TRUE((verdict[corner] == es::Verdict::AlreadySharp));
   features[corner].medianLift = 1.0;
   features[b] = feature(3, 3, /*offPlane=*/1.0);  // strip B weak by its evidence: its corner too
   features[b].medianLift = 0.8;
-  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
-                          /*exactSampling=*/true, &alreadySharp);
-  EXPECT_TRUE(weak[b]);
-  EXPECT_TRUE(weak[corner]);
+  verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
+                                /*exactSampling=*/true);
+  EXPECT_TRUE(es::isLeft(verdict[b]));
+  EXPECT_TRUE(es::isLeft(verdict[corner]));
   // Weak by their evidence, not by sliding: every move of theirs goes back.
-  EXPECT_FALSE(alreadySharp[b] || alreadySharp[corner]);
+  EXPECT_FALSE((verdict[b] == es::Verdict::AlreadySharp) ||
+               (verdict[corner] == es::Verdict::AlreadySharp));
   features[b].medianLift = 0.0;  // weak by its evidence and sliding: the evidence decides
-  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
-                          /*exactSampling=*/true, &alreadySharp);
-  EXPECT_TRUE(weak[b]);
-  EXPECT_FALSE(alreadySharp[b]);
+  verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
+                                /*exactSampling=*/true);
+  EXPECT_TRUE(es::isLeft(verdict[b]));
+  EXPECT_FALSE((verdict[b] == es::Verdict::AlreadySharp));
   features[b] = feature(3, 3);
   features[b].medianLift = 0.8;
   EXPECT_FALSE(es::meshEvidenceIsWeak(0.0, 0.03, kRoughSurface, opt, /*exactSampling=*/true));
   EXPECT_TRUE(es::meshEvidenceIsWeak(0.0, 0.03, kRoughSurface, opt, /*exactSampling=*/false));
   // Where the median lifts, a feature sliding alone is judged as before.
-  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.5, kRoughSurface, opt,
-                          /*exactSampling=*/true);
-  EXPECT_FALSE(weak[a] || weak[b] || weak[corner]);
+  verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/0.5, kRoughSurface, opt,
+                                /*exactSampling=*/true);
+  EXPECT_FALSE(es::isLeft(verdict[a]) || es::isLeft(verdict[b]) || es::isLeft(verdict[corner]));
   // Not sampled exactly: the whole mesh is already sharp, every move goes back.
-  weak = es::weakFeatures(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
-                          /*exactSampling=*/false, &alreadySharp);
-  for (char w : weak) EXPECT_TRUE(w);
-  for (char s : alreadySharp) EXPECT_FALSE(s);
+  verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/0.03, kRoughSurface, opt,
+                                /*exactSampling=*/false);
+  for (es::Verdict v : verdict) EXPECT_EQ(v, es::Verdict::MeshEvidenceWeak);
 }
 
 TEST(FeatureEvidence, EachFeatureTakesTheMedianLiftOfItsOwnMoves) {

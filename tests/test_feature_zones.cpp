@@ -231,7 +231,7 @@ TEST(LabelZoneVertices, ZoneVerticesTakeTheRegionWhosePlaneTheyLieOn) {
   const es::VertexFaceTable vf(t.m);
   es::SharpenOptions opt;
   opt.method = es::Method::Extended;
-  ASSERT_EQ(opt.maxLabelHops, 3);
+  ASSERT_EQ(opt.extended.maxLabelHops, 3);
   es::ExtendedStats stats;
   es::labelZoneVertices(t.m, vf, opt, t.zones, stats);
   EXPECT_EQ(stats.zoneVertices, std::size_t(4 * (kNy + 1)));
@@ -255,7 +255,7 @@ TEST(LabelZoneVertices, VerticesBeyondMaxLabelHopsStayUnlabelled) {
   const es::VertexFaceTable vf(t.m);
   es::SharpenOptions opt;
   opt.method = es::Method::Extended;
-  opt.maxLabelHops = 1;
+  opt.extended.maxLabelHops = 1;
   es::ExtendedStats stats;
   es::labelZoneVertices(t.m, vf, opt, t.zones, stats);
   EXPECT_EQ(stats.zoneVertices, std::size_t(4 * (kNy + 1)));

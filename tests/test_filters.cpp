@@ -170,7 +170,7 @@ TEST(Fallbacks, EdgeLengthCheckRejectsFarIntersections) {
   es::Mesh m;
   makeHeightField(m, kNx, kNy, kH, stepTilted);
   es::SharpenOptions opt = es::SharpenOptions::paperMethod();
-  opt.convexityCheck = false;
+  opt.paper.convexityCheck = false;
   const auto r = es::sharpen(m, opt);
   EXPECT_EQ(r.placement.count(es::Placement::EdgeTooLong), r.subdivision.insertedVertices);
   // No edge of the output is longer than the input's longest edge.
@@ -194,7 +194,7 @@ TEST(Fallbacks, ParallelPlanesKeepVerticesAtRest) {
   es::Mesh m;
   makeHeightField(m, kNx, kNy, kH, stepParallel);
   es::SharpenOptions opt = es::SharpenOptions::paperMethod();
-  opt.convexityCheck = false;  // otherwise the step is caught as mixed first
+  opt.paper.convexityCheck = false;  // otherwise the step is caught as mixed first
   const auto r = es::sharpen(m, opt);
   ASSERT_GT(r.subdivision.insertedVertices, 0u);
   EXPECT_EQ(r.placement.count(es::Placement::ParallelPlanes), r.subdivision.insertedVertices);
@@ -262,8 +262,8 @@ TEST(Extended, RidgeFadingIntoOneRegionIsStillSharpened) {
   es::SharpenOptions opt = es::SharpenOptions::paperMethod();
   opt.method = es::Method::Extended;
   es::SharpenOptions oneSurfacePerRegion = opt;
-  oneSurfacePerRegion.openInternalCreases = false;
-  oneSurfacePerRegion.sameRegionFeatureAngleRad = 0;
+  oneSurfacePerRegion.extended.openInternalCreases = false;
+  oneSurfacePerRegion.extended.sameRegionFeatureAngleRad = 0;
   {
     es::Mesh m;
     makeHeightField(m, kNx, kNy, kH, fadingRidge);
@@ -342,12 +342,16 @@ TEST(Fallbacks, CornerPairBendsAwayWhereTheCornerDoesNot) {
   EXPECT_TRUE(es::detail::cornerPairBendsAway(corner, planes, support, opt));
   Vec3 target;
   bool bent = false;
-  EXPECT_EQ(es::proposePlacement(corner, support, opt, target, bent), es::Placement::CurvedSupport);
+  EXPECT_EQ(es::proposePlacement(corner, support, opt, es::PlacementPolicy::extendedMethod(opt),
+                                 target, bent),
+            es::Placement::CurvedSupport);
 
   // A gently curved side passes both: the corner is sharpened.
   curveSide(0.5);
   EXPECT_FALSE(es::detail::cornerPairBendsAway(corner, planes, support, opt));
-  ASSERT_EQ(es::proposePlacement(corner, support, opt, target, bent), es::Placement::Moved);
+  ASSERT_EQ(es::proposePlacement(corner, support, opt, es::PlacementPolicy::extendedMethod(opt),
+                                 target, bent),
+            es::Placement::Moved);
   EXPECT_LT(target.Norm(), 1e-12);
   EXPECT_FALSE(bent);
 
@@ -355,16 +359,21 @@ TEST(Fallbacks, CornerPairBendsAwayWhereTheCornerDoesNot) {
   // sample spacings, the bend only marks the vertex, which moves to the
   // corner and stays there only with a feature whose evidence is strong.
   curveSide(5.0);
-  opt.method = es::Method::Auto;
   support.sampleSpacing = 0.2;
-  ASSERT_EQ(es::proposePlacement(corner, support, opt, target, bent), es::Placement::Moved);
+  ASSERT_EQ(es::proposePlacement(corner, support, opt, es::PlacementPolicy::autoMethod(opt), target,
+                                 bent),
+            es::Placement::Moved);
   EXPECT_TRUE(bent);
   EXPECT_LT(target.Norm(), 1e-12);
   support.sampleSpacing = 0.1;  // a longer move extrapolates the curved flank
-  EXPECT_EQ(es::proposePlacement(corner, support, opt, target, bent), es::Placement::CurvedSupport);
+  EXPECT_EQ(es::proposePlacement(corner, support, opt, es::PlacementPolicy::autoMethod(opt), target,
+                                 bent),
+            es::Placement::CurvedSupport);
   support.sampleSpacing = 0.2;
-  opt.maxBentMoveSpacings = 0;  // off: the bend keeps the vertex at rest
-  EXPECT_EQ(es::proposePlacement(corner, support, opt, target, bent), es::Placement::CurvedSupport);
+  opt.rules.vertex.maxBentMoveSpacings = 0;  // off: the bend keeps the vertex at rest
+  EXPECT_EQ(es::proposePlacement(corner, support, opt, es::PlacementPolicy::autoMethod(opt), target,
+                                 bent),
+            es::Placement::CurvedSupport);
 }
 
 // An inserted vertex whose sharp edge lies more than maxDisplacementSpacings
@@ -388,15 +397,21 @@ TEST(Fallbacks, SharpEdgeFarAwayKeepsVertexAtRest) {
   opt.method = es::Method::Extended;
   Vec3 target;
   bool bent = false;
-  ASSERT_EQ(es::proposePlacement(edge, support, opt, target, bent), es::Placement::Moved);
+  ASSERT_EQ(es::proposePlacement(edge, support, opt, es::PlacementPolicy::extendedMethod(opt),
+                                 target, bent),
+            es::Placement::Moved);
   EXPECT_LT(target.Norm(), 1e-12);
 
   // The sharp edge lies 0.141 from the chamfer's middle, more than 2.5
   // sample spacings of 0.05 but less than 2.5 x 0.1.
   support.sampleSpacing = 0.05;
-  EXPECT_EQ(es::proposePlacement(edge, support, opt, target, bent), es::Placement::FarFromChamfer);
-  opt.maxDisplacementSpacings = 0;  // bound off
-  EXPECT_EQ(es::proposePlacement(edge, support, opt, target, bent), es::Placement::Moved);
+  EXPECT_EQ(es::proposePlacement(edge, support, opt, es::PlacementPolicy::extendedMethod(opt),
+                                 target, bent),
+            es::Placement::FarFromChamfer);
+  opt.extended.maxDisplacementSpacings = 0;  // bound off
+  EXPECT_EQ(es::proposePlacement(edge, support, opt, es::PlacementPolicy::extendedMethod(opt),
+                                 target, bent),
+            es::Placement::Moved);
 }
 
 // The intersection guard's broad phase: a hashed grid over the query boxes.

@@ -92,7 +92,7 @@ TEST(PlanarRegions, ACubesSidesArePlanesUnlessTheOptionIsOff) {
     es::Mesh m;
     es::hand_built::voxelSurface(m, {{0, 0, 0}}, 12);
     es::SharpenOptions opt;
-    opt.regionPlanes = on;
+    opt.extended.regionPlanes = on;
     const es::SharpenReport r = es::sharpen(m, opt);
     EXPECT_EQ(r.extended.planarRegions, on ? 6u : 0u);
   }
@@ -137,9 +137,11 @@ struct TwoSources {
   Vec3 placed(double typicalTurnDeg = -1) const {
     const es::Plane fits[2] = {support.plane(0), support.plane(1)};
     Vec3 target;
-    EXPECT_EQ(es::paperPlacement(src, fits, opt, target), es::Placement::Moved);
+    EXPECT_EQ(es::paperPlacement(src, fits, es::PlacementPolicy::autoMethod(opt).paper, target),
+              es::Placement::Moved);
     const double typical = typicalTurnDeg < 0 ? -1 : typicalTurnDeg * M_PI / 180.0;
-    es::detail::onRegionPlanes(src, support, opt, target, typical);
+    es::detail::onRegionPlanes(src, support, es::PlacementPolicy::autoMethod(opt).paper, target,
+                               typical);
     return target;
   }
 };

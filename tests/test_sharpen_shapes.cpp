@@ -180,8 +180,8 @@ TEST(SharpenShapes, AutoReportsItsSampleSpacingAndRefusedBound) {
     EXPECT_DOUBLE_EQ(r.extended.sampleSpacing, median) << name;
     EXPECT_GT(r.extended.sampleSpacing, 0.3 * cell) << name;  // marching cubes: about a cell
     EXPECT_LT(r.extended.sampleSpacing, 1.5 * cell) << name;
-    EXPECT_TRUE(r.evidence.refusedBound == opt.maxRefusedFraction ||
-                r.evidence.refusedBound == opt.maxRefusedFractionSmooth)
+    EXPECT_TRUE(r.evidence.refusedBound == opt.rules.mesh.maxRefusedFraction ||
+                r.evidence.refusedBound == opt.rules.mesh.maxRefusedFractionSmooth)
         << name << ": " << r.evidence.refusedBound;
     if (r.evidence.refusedFraction > r.evidence.refusedBound) {
       EXPECT_TRUE(r.evidence.wholeMeshLeft) << name;

@@ -92,15 +92,15 @@ int main(int argc, char **argv) {
     // The same stages as sharpen(), up to the evidence guard.
     es::SharpenReport report = es::detail::validate(m, opt);
     es::MeshLabels<es::Mesh> labels(m);
-    es::FeatureZones zones;
-    es::detail::detect(m, labels, opt, report, zones);
+    const es::FeatureZones zones = es::detail::detectByZones(m, labels, opt, report);
     const es::InputFaces<es::Mesh> inputFaces(m);
     const es::SurfaceMeasures measures =
         es::measureSurface(m, zones.inputFaces, zones.faceRegion, zones.support.sampleSpacing);
     const es::SplitPlan plan = es::planSplits(m, labels);
     report.subdivision = es::subdivide(m, plan, labels);
     es::VertexMoves<es::Mesh> moves(m, plan, labels, true);
-    es::placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt, zones.support);
+    es::placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt,
+                              es::PlacementPolicy::autoMethod(opt), zones.support);
     es::refineExtendedPlacement(m, moves, zones, opt, report);
     // The evidence as the guard sees it (before the cleanup); the harm after every guard.
     const es::InputSurface surface{zones.inputFaces, inputFaces.faceVertices()};
@@ -110,13 +110,17 @@ int main(int argc, char **argv) {
     const std::vector<es::Feature> &features = guard.features();
     const std::vector<std::uint32_t> &featureOf = guard.featureOf();
     const std::vector<double> &lifts = judged.lifts;
-    const std::vector<char> &weak = judged.weak;
+    std::vector<char> weak(features.size());
+    for (std::size_t c = 0; c < features.size(); ++c) weak[c] = judged.left(c);
     // The same verdicts without the off-plane test, to study a replacement for it.
     es::SharpenOptions withoutOffPlane = opt;
-    withoutOffPlane.maxFeatureOffPlaneSpacings = 1e30;
-    const std::vector<char> weakOtherwise =
-        es::weakFeatures(plan, features, featureOf, judged.stats.medianLift, measures,
-                         withoutOffPlane, judged.stats.exactSampling);
+    withoutOffPlane.rules.feature.maxFeatureOffPlaneSpacings = 1e30;
+    const std::vector<es::Verdict> verdictsOtherwise =
+        es::featureVerdicts(plan, features, featureOf, judged.stats.medianLift, measures,
+                            withoutOffPlane, judged.stats.exactSampling);
+    std::vector<char> weakOtherwise(features.size());
+    for (std::size_t c = 0; c < features.size(); ++c)
+      weakOtherwise[c] = verdictsOtherwise[c] != es::Verdict::Restored;
     // Each feature's source vertices' distances to their own plane, as the guard measured them.
     const std::vector<std::vector<double>> offPlane =
         es::sourceOffPlanes(m, moves, zones.support, featureOf, features.size());
@@ -164,7 +168,7 @@ int main(int argc, char **argv) {
         if (m.vert[v].IsD() || !moves.isMoved(v) || weak[c]) continue;
         const es::Vec3 target = es::positionOf(&m.vert[v]), rest = plan.inserted[k].rest;
         const auto own = guard.vertexEvidence(k);
-        if (own.sourceOffPlaneSpacings > opt.maxFeatureOffPlaneSpacings)
+        if (own.sourceOffPlaneSpacings > opt.rules.feature.maxFeatureOffPlaneSpacings)
           continue;  // a far sample's
         double reach = 0;
         for (int i = 0; i < plan.inserted[k].originalCount; ++i)

@@ -25,24 +25,25 @@ void detectFeatureZones(MeshType &m, MeshLabels<MeshType> &labels, const Sharpen
   zones.inputFaces = VertexFaceTable(m);
   const VertexFaceTable &vf = zones.inputFaces;
   const bool meshHasBorder = report.smooth.boundaryEdges > 0;
-  segmentRegions(m, labels, vf, opt.minRegionDepth, zones, stats, meshHasBorder);
+  segmentRegions(m, labels, vf, opt.extended.minRegionDepth, zones, stats, meshHasBorder);
   zones.support.sampleSpacing = medianEdgeLength(m);
   stats.sampleSpacing = zones.support.sampleSpacing;
-  if (opt.openRegionContacts) {
-    stats.openedContacts =
-        openRegionContacts(m, vf, zones, opt.minFacetLengthSpacings * zones.support.sampleSpacing,
-                           stats.keptFacets, meshHasBorder);
+  if (opt.extended.openRegionContacts) {
+    stats.openedContacts = openRegionContacts(
+        m, vf, zones, opt.extended.minFacetLengthSpacings * zones.support.sampleSpacing,
+        stats.keptFacets, meshHasBorder);
     stats.zoneFaces += stats.openedContacts;
   }
-  if (opt.openInternalCreases) {
+  if (opt.extended.openInternalCreases) {
     // A coarse sampling of a curved surface has large angles everywhere.
-    const double creaseAngle = std::max(
-        opt.internalCreaseAngleRad, opt.internalCreaseThresholdFactor * report.smooth.thresholdRad);
+    const double creaseAngle =
+        std::max(opt.extended.internalCreaseAngleRad,
+                 opt.extended.internalCreaseThresholdFactor * report.smooth.thresholdRad);
     stats.openedCreases = openInternalCreases(m, labels, vf, creaseAngle, zones);
     stats.zoneFaces += stats.openedCreases;
   }
   labelZoneVertices(m, vf, opt, zones, stats);
-  report.filters = markZoneChamfers(m, labels, zones, opt.sameRegionFeatureAngleRad);
+  report.filters = markZoneChamfers(m, labels, zones, opt.extended.sameRegionFeatureAngleRad);
 }
 
 /// Per original vertex: 1 when it is a source of an inserted vertex that

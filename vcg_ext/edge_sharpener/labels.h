@@ -69,4 +69,61 @@ inline const char *toString(Placement p) {
   return "unknown";
 }
 
+/// The auto method's judgement of one feature (a chamfer strip between two
+/// regions, or a cluster of corner vertices): restored, or left as it came
+/// and why (auto_rules.h names the rule behind each; feature_evidence.h:
+/// judgeFeature).
+enum class Verdict : std::uint8_t {
+  Restored,           ///< sharpened
+  MeshEvidenceWeak,   ///< the whole mesh was left: too many moves refused, or already sharp
+  OnTheSurface,       ///< sampled exactly, half its samples off their planes: a designed bevel
+  TooShort,           ///< fewer new vertices than a feature has
+  ShallowAngle,       ///< its flanks meet at a shallow crease or a knife edge
+  LineAcrossChamfer,  ///< its flanks' planes meet on a line across the chamfer, not along it
+  OffItsPlanes,       ///< a sample beside it lies far off the plane of its flank
+  MostlyRefused,      ///< placement's tests refused most of its new vertices
+  CornerOfWeakEdge,   ///< a corner one of whose edges was left
+  AlreadySharp,       ///< its moves slide along the input: sharp there already
+};
+constexpr int kVerdictCount = 10;
+
+/// Whether a feature of this verdict is left as it came.
+inline bool isLeft(Verdict v) {
+  return v != Verdict::Restored;
+}
+
+/// snake_case name (JSON keys, Python).
+inline const char *toString(Verdict v) {
+  switch (v) {
+    case Verdict::Restored: return "restored";
+    case Verdict::MeshEvidenceWeak: return "mesh_evidence_weak";
+    case Verdict::OnTheSurface: return "on_the_surface";
+    case Verdict::TooShort: return "too_short";
+    case Verdict::ShallowAngle: return "shallow_angle";
+    case Verdict::LineAcrossChamfer: return "line_across_chamfer";
+    case Verdict::OffItsPlanes: return "off_its_planes";
+    case Verdict::MostlyRefused: return "mostly_refused";
+    case Verdict::CornerOfWeakEdge: return "corner_of_weak_edge";
+    case Verdict::AlreadySharp: return "already_sharp";
+  }
+  return "unknown";
+}
+
+/// A few words for people (CLI, MeshLab log).
+inline const char *describe(Verdict v) {
+  switch (v) {
+    case Verdict::Restored: return "restored";
+    case Verdict::MeshEvidenceWeak: return "weak evidence over the whole mesh";
+    case Verdict::OnTheSurface: return "on the surface (designed bevel)";
+    case Verdict::TooShort: return "too short";
+    case Verdict::ShallowAngle: return "shallow angle";
+    case Verdict::LineAcrossChamfer: return "planes meet across it";
+    case Verdict::OffItsPlanes: return "off its planes";
+    case Verdict::MostlyRefused: return "mostly refused";
+    case Verdict::CornerOfWeakEdge: return "corner of a weak edge";
+    case Verdict::AlreadySharp: return "already sharp";
+  }
+  return "unknown";
+}
+
 }  // namespace edge_sharpener

@@ -146,12 +146,12 @@ inline int flankPairCount(const InsertedVertexSource &src) {
 
 /// Whether a flank's region, curving across the feature as measured where
 /// its plane was fitted (a blend, a coarse cylinder's facets), leaves that
-/// plane before reaching `target` by more than opt.maxBendFraction x the
+/// plane before reaching `target` by more than opt.extended.maxBendFraction x the
 /// vertex's displacement (geometry.h: extrapolationBend).
 inline bool flankBendsAway(const InsertedVertexSource &src, const Plane *planes,
                            const SupportPlanes &support, const SharpenOptions &opt,
                            const Vec3 &target) {
-  const double allowed = opt.maxBendFraction * (target - src.rest).Norm();
+  const double allowed = opt.extended.maxBendFraction * (target - src.rest).Norm();
   // An edge vertex: the bend is measured across the edge only.
   const Vec3 edge = src.originalCount == 2 ? planes[0].normal ^ planes[1].normal : Vec3(0, 0, 0);
   const double edgeLength = edge.Norm();
@@ -165,9 +165,9 @@ inline bool flankBendsAway(const InsertedVertexSource &src, const Plane *planes,
     // Below this spread the regression mostly sees marching-cubes noise,
     // unless the normals follow position cleanly (a finely sampled curve).
     const SupportFit &fit = support.fit(v);
-    if (fit.spreadRad < opt.minBendSpreadRad &&
+    if (fit.spreadRad < opt.extended.minBendSpreadRad &&
         curveFitQuality(fit.normalScatter, fit.pointScatter, fit.normalSelfScatter, w / d) <
-            opt.minBendFitQuality)
+            opt.extended.minBendFitQuality)
       continue;
     if (extrapolationBend(fit.normalScatter, fit.pointScatter, w / d, d) > allowed) return true;
   }
@@ -187,8 +187,8 @@ inline bool cornerPairBendsAway(const InsertedVertexSource &src, const Plane *pl
     pair.originalCount = 2;
     pair.original = {src.original[i], src.original[j], 0};
     const Plane pairPlanes[2] = {planes[i], planes[j]};
-    const auto onLine =
-        closestPointOnPlanePairLine(pairPlanes[0], pairPlanes[1], src.rest, opt.parallelAngleRad);
+    const auto onLine = closestPointOnPlanePairLine(pairPlanes[0], pairPlanes[1], src.rest,
+                                                    opt.paper.parallelAngleRad);
     if (onLine && flankBendsAway(pair, pairPlanes, support, opt, *onLine)) return true;
   }
   return false;
@@ -214,14 +214,14 @@ bool anyNearbyThirdRegion(const InsertedVertexSource &src, const SupportPlanes &
   return false;
 }
 
-/// Whether `target` passes, by more than opt.intermediatePlaneTolerance x the
+/// Whether `target` passes, by more than opt.extended.intermediatePlaneTolerance x the
 /// vertex's displacement, through the plane of a region found near the
 /// sources whose normal lies between two flanks' (a facet of a coarse curve,
 /// a strip of a blend): the planes' line or corner would cut through it.
 inline bool passesIntermediateRegion(const InsertedVertexSource &src, const Plane *planes,
                                      const SupportPlanes &support, const SharpenOptions &opt,
                                      const Vec3 &target) {
-  const double allowed = opt.intermediatePlaneTolerance * (target - src.rest).Norm();
+  const double allowed = opt.extended.intermediatePlaneTolerance * (target - src.rest).Norm();
   const int n = src.originalCount;
   Vec3 normalSum(0, 0, 0);
   for (int i = 0; i < n; ++i) normalSum += planes[i].normal;
@@ -230,22 +230,45 @@ inline bool passesIntermediateRegion(const InsertedVertexSource &src, const Plan
     bool between = false;
     for (int a = 0; a < flankPairCount(src); ++a)
       between |= normalBetween(planes[a].normal, planes[(a + 1) % n].normal, l.normal,
-                               opt.intermediateSlackRad);
+                               opt.extended.intermediateSlackRad);
     return between && passageBeyondPlane(normalSum, l, src.rest, target) > allowed;
   });
 }
 
 }  // namespace detail
 
-/// Whether placement keeps the paper's convexity check. At a saddle corner,
-/// where a concave edge meets convex ones, the chamfer edges near the corner
-/// lie between a concave and a convex side too: the paper cannot tell them
-/// from a step between two surfaces and keeps them at rest. The auto method
-/// judges them by its own tests instead (the planes' apex and distance, the
-/// flanks' bends, the evidence of the whole feature).
-inline bool appliesConvexityCheck(const SharpenOptions &opt) {
-  return opt.convexityCheck && opt.method != Method::Auto;
-}
+/// What placement does differently per method, chosen once by each method's
+/// pipeline (sharpen_impl.h).
+struct PlacementPolicy {
+  /// The paper's settings as placement applies them. At a saddle corner,
+  /// where a concave edge meets convex ones, the chamfer edges near the
+  /// corner lie between a concave and a convex side too: the paper cannot
+  /// tell them from a step between two surfaces and keeps them at rest. The
+  /// auto method turns the convexity check off and judges them by its own
+  /// tests instead (the planes' apex and distance, the flanks' bends, the
+  /// evidence of the whole feature).
+  PaperSettings paper;
+  /// The extended method's vetoes (veto::) and its own-plane placement.
+  bool vetoes = false;
+  /// A move the bend test would refuse moves when at most this many sample
+  /// spacings long, left to its feature's evidence (auto; 0: refused).
+  double bentMoveSpacings = 0;
+  /// The edge-length check's bound, times the input's longest edge.
+  double edgeLengthFactor = 1.0;
+
+  static PlacementPolicy paperMethod(const SharpenOptions &opt) {
+    return {opt.paper, false, 0, 1.0};
+  }
+  static PlacementPolicy extendedMethod(const SharpenOptions &opt) {
+    return {opt.paper, true, 0, opt.extended.extendedEdgeLengthFactor};
+  }
+  static PlacementPolicy autoMethod(const SharpenOptions &opt) {
+    PaperSettings paper = opt.paper;
+    paper.convexityCheck = false;
+    return {paper, true, opt.rules.vertex.maxBentMoveSpacings,
+            opt.extended.extendedEdgeLengthFactor};
+  }
+};
 
 /// The paper's placement of one inserted vertex (section 3, Figures 5 and 6)
 /// between its source vertices' support planes: the point of the planes'
@@ -253,9 +276,9 @@ inline bool appliesConvexityCheck(const SharpenOptions &opt) {
 /// common point (a corner), or one of the paper's degenerate cases.
 /// \return the outcome and, for Placement::Moved, the target in `target`.
 inline Placement paperPlacement(const InsertedVertexSource &src, const Plane *planes,
-                                const SharpenOptions &opt, Vec3 &target) {
-  if (appliesConvexityCheck(opt)) {
-    const double flat = std::sin(opt.parallelAngleRad);
+                                const PaperSettings &paper, Vec3 &target) {
+  if (paper.convexityCheck) {
+    const double flat = std::sin(paper.parallelAngleRad);
     for (int i = 0; i < detail::flankPairCount(src); ++i) {
       const int j = (i + 1) % src.originalCount;
       if (classifyChamferEdge(planes[i], planes[j], flat) == EdgeConvexity::Mixed)
@@ -263,11 +286,11 @@ inline Placement paperPlacement(const InsertedVertexSource &src, const Plane *pl
     }
   }
   if (src.originalCount == 2) {
-    auto x = closestPointOnPlanePairLine(planes[0], planes[1], src.rest, opt.parallelAngleRad);
+    auto x = closestPointOnPlanePairLine(planes[0], planes[1], src.rest, paper.parallelAngleRad);
     if (!x) return Placement::ParallelPlanes;
     target = *x;
   } else {
-    auto x = intersectThreePlanes(planes[0], planes[1], planes[2], opt.parallelAngleRad);
+    auto x = intersectThreePlanes(planes[0], planes[1], planes[2], paper.parallelAngleRad);
     if (!x) return Placement::CoplanarNormals;
     target = *x;
   }
@@ -275,17 +298,6 @@ inline Placement paperPlacement(const InsertedVertexSource &src, const Plane *pl
 }
 
 namespace detail {
-
-/// See onRegionPlanes(): in sample spacings.
-constexpr double kMinShiftSpacings = 0.1;
-
-/// See onRegionPlanes(): a fitted plane turned farther than this from its
-/// region's own plane lies on another surface the region took in.
-constexpr double kOwnPlaneMaxTurnRad = 30.0 * M_PI / 180.0;
-
-/// See onRegionPlanes(): a fitted plane turned farther than this beyond the
-/// typical turn of its edge's fits (OwnPlaneTurns) sees another surface.
-constexpr double kOwnPlaneMaxExtraTurnRad = 20.0 * M_PI / 180.0;
 
 /// The largest angle between the fitted planes of `src`'s sources and their
 /// regions' own planes (SupportPlanes::regionPlanes); -1 where a source's
@@ -341,9 +353,9 @@ namespace detail {
 /// Moves `target`, the placement between the planes fitted next to the
 /// feature, onto the sources' regions' own planes (SupportPlanes::
 /// regionPlanes) where every source's region is a plane and the placement
-/// between those planes lies more than kMinShiftSpacings and at most one
+/// between those planes lies more than ExtendedSettings::kMinShiftSpacings and at most one
 /// sample spacing from `target` (the vetoes judged the move from there),
-/// and where each source's fitted plane turns by at most kOwnPlaneMaxTurnRad
+/// and where each source's fitted plane turns by at most ExtendedSettings::kOwnPlaneMaxTurnRad
 /// from its region's: a region can take in a second surface across a crease
 /// its sampling blurs (a nut's conical chamfer beside its flat top), and
 /// there the fit beside the feature, not the region's core, is the flank.
@@ -354,17 +366,18 @@ namespace detail {
 /// region nearby is a plane too, and stops at the corner where that line
 /// meets it (keepBeforeEndPlane); a corner vertex only where no fourth
 /// region lies nearby. Nor where an edge vertex's fits turn from the own
-/// planes more than kOwnPlaneMaxExtraTurnRad beyond its edge's typical turn
+/// planes more than ExtendedSettings::kOwnPlaneMaxExtraTurnRad beyond its edge's typical turn
 /// (`typicalTurnRad`, OwnPlaneTurns; negative: not known): a reconstruction
 /// rounds the whole edge alike, while a fit that turns alone sees where the
 /// flank runs on into another surface (a fillet at the edge's end), past
 /// which the own planes' line runs on straight.
 inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes &support,
-                           const SharpenOptions &opt, Vec3 &target, double typicalTurnRad = -1) {
+                           const PaperSettings &paper, Vec3 &target, double typicalTurnRad = -1) {
   if (support.regionPlanes.empty()) return;
   const double turn = ownPlaneTurnRad(src, support);
-  if (turn < 0 || turn > kOwnPlaneMaxTurnRad) return;
-  if (typicalTurnRad >= 0 && turn > typicalTurnRad + kOwnPlaneMaxExtraTurnRad) return;
+  if (turn < 0 || turn > ExtendedSettings::kOwnPlaneMaxTurnRad) return;
+  if (typicalTurnRad >= 0 && turn > typicalTurnRad + ExtendedSettings::kOwnPlaneMaxExtraTurnRad)
+    return;
   const auto ownPlane = [&](int region) { return regionPlaneOf(support.regionPlanes, region); };
   Plane own[3];
   for (int i = 0; i < src.originalCount; ++i) own[i] = *ownPlane(support.region[src.original[i]]);
@@ -380,14 +393,15 @@ inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes 
   });
   if (blocked) return;
   Vec3 onOwn;
-  if (paperPlacement(src, own, opt, onOwn) != Placement::Moved) return;
+  if (paperPlacement(src, own, paper, onOwn) != Placement::Moved) return;
   for (int k = 0; k < endCount; ++k) {
-    const auto kept = keepBeforeEndPlane(own[0], own[1], *ends[k], onOwn, opt.parallelAngleRad);
+    const auto kept = keepBeforeEndPlane(own[0], own[1], *ends[k], onOwn, paper.parallelAngleRad);
     if (!kept) return;
     onOwn = *kept;
   }
   const double shift = (onOwn - target).Norm();
-  if (shift > kMinShiftSpacings * support.sampleSpacing && shift <= support.sampleSpacing)
+  if (shift > ExtendedSettings::kMinShiftSpacings * support.sampleSpacing &&
+      shift <= support.sampleSpacing)
     target = onOwn;
 }
 
@@ -398,29 +412,30 @@ inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes 
 /// measures the support planes do not carry lets it move.
 namespace veto {
 
-using Verdict = std::optional<Placement>;
+/// The outcome a veto keeps a vertex at rest with, or none.
+using Refusal = std::optional<Placement>;
 
 /// A region that turns as much near the feature as the feature itself is a
 /// blend or a facetted curve, not the flank of a sharp edge.
-inline Verdict regionsTurnLikeABlend(const InsertedVertexSource &src, const Plane *planes,
+inline Refusal regionsTurnLikeABlend(const InsertedVertexSource &src, const Plane *planes,
                                      const SupportPlanes &support, const SharpenOptions &opt) {
-  if (!support.measured || !(opt.maxSupportSpreadRatio > 0)) return std::nullopt;
+  if (!support.measured || !(opt.extended.maxSupportSpreadRatio > 0)) return std::nullopt;
   for (int i = 0; i < detail::flankPairCount(src); ++i) {
     const int j = (i + 1) % src.originalCount;
     const double theta = angleBetween(planes[i].normal, planes[j].normal);
     const double spread =
         std::max(support.fit(src.original[i]).spreadRad, support.fit(src.original[j]).spreadRad);
-    if (spread > opt.maxSupportSpreadRatio * theta) return Placement::CurvedSupport;
+    if (spread > opt.extended.maxSupportSpreadRatio * theta) return Placement::CurvedSupport;
   }
   return std::nullopt;
 }
 
 /// A flank bends away from its plane before the target (detail::flankBendsAway),
 /// or, at a corner, before the line of a pair of its planes.
-inline Verdict flankBendsAway(const InsertedVertexSource &src, const Plane *planes,
+inline Refusal flankBendsAway(const InsertedVertexSource &src, const Plane *planes,
                               const SupportPlanes &support, const SharpenOptions &opt,
                               const Vec3 &target) {
-  if (!support.measured || opt.maxBendFraction < 0) return std::nullopt;
+  if (!support.measured || opt.extended.maxBendFraction < 0) return std::nullopt;
   if (detail::flankBendsAway(src, planes, support, opt, target) ||
       detail::cornerPairBendsAway(src, planes, support, opt))
     return Placement::CurvedSupport;
@@ -429,10 +444,10 @@ inline Verdict flankBendsAway(const InsertedVertexSource &src, const Plane *plan
 
 /// The target lies beyond the plane of a region between the flanks
 /// (detail::passesIntermediateRegion): the surface turns through facets.
-inline Verdict passesIntermediateRegion(const InsertedVertexSource &src, const Plane *planes,
+inline Refusal passesIntermediateRegion(const InsertedVertexSource &src, const Plane *planes,
                                         const SupportPlanes &support, const SharpenOptions &opt,
                                         const Vec3 &target) {
-  if (support.nearby.empty() || opt.intermediatePlaneTolerance < 0) return std::nullopt;
+  if (support.nearby.empty() || opt.extended.intermediatePlaneTolerance < 0) return std::nullopt;
   if (detail::passesIntermediateRegion(src, planes, support, opt, target))
     return Placement::CurvedSupport;
   return std::nullopt;
@@ -440,58 +455,60 @@ inline Verdict passesIntermediateRegion(const InsertedVertexSource &src, const P
 
 /// The planes meet higher above the chamfer than their angle allows
 /// (geometry.h: chamferApexHeightRatio).
-inline Verdict apexTooHigh(const InsertedVertexSource &src, const Plane *planes,
+inline Refusal apexTooHigh(const InsertedVertexSource &src, const Plane *planes,
                            const SharpenOptions &opt, const Vec3 &target) {
-  if (!(opt.apexHeightFactor > 0)) return std::nullopt;
+  if (!(opt.extended.apexHeightFactor > 0)) return std::nullopt;
   for (int i = 0; i < detail::flankPairCount(src); ++i)
     if (chamferApexHeightRatio(planes[i], planes[(i + 1) % src.originalCount], target) >
-        opt.apexHeightFactor)
+        opt.extended.apexHeightFactor)
       return Placement::FarFromChamfer;
   return std::nullopt;
 }
 
 /// The target lies more than maxDisplacementSpacings sample spacings away.
-inline Verdict displacementTooLarge(const InsertedVertexSource &src, const SupportPlanes &support,
+inline Refusal displacementTooLarge(const InsertedVertexSource &src, const SupportPlanes &support,
                                     const SharpenOptions &opt, const Vec3 &target) {
-  if (!(support.sampleSpacing > 0) || !(opt.maxDisplacementSpacings > 0)) return std::nullopt;
-  if ((target - src.rest).Norm() > opt.maxDisplacementSpacings * support.sampleSpacing)
+  if (!(support.sampleSpacing > 0) || !(opt.extended.maxDisplacementSpacings > 0))
+    return std::nullopt;
+  if ((target - src.rest).Norm() > opt.extended.maxDisplacementSpacings * support.sampleSpacing)
     return Placement::FarFromChamfer;
   return std::nullopt;
 }
 
 /// Whether the bend test only marks a vertex (MeshLabels::bentFlank) instead
 /// of keeping it at rest, for a move to `target`: in the auto method, a move
-/// within SharpenOptions::maxBentMoveSpacings is left to its feature's
-/// evidence (a sampler's rounding, not a curved flank extrapolated far).
+/// within VertexRules::maxBentMoveSpacings is left to its feature's evidence
+/// (a sampler's rounding, not a curved flank extrapolated far).
 inline bool bendOnlyMarks(const InsertedVertexSource &src, const SupportPlanes &support,
-                          const SharpenOptions &opt, const Vec3 &target) {
-  return opt.method == Method::Auto && opt.maxBentMoveSpacings > 0 && support.sampleSpacing > 0 &&
-         (target - src.rest).Norm() <= opt.maxBentMoveSpacings * support.sampleSpacing;
+                          const PlacementPolicy &policy, const Vec3 &target) {
+  return policy.bentMoveSpacings > 0 && support.sampleSpacing > 0 &&
+         (target - src.rest).Norm() <= policy.bentMoveSpacings * support.sampleSpacing;
 }
 
 /// The vetoes that need the paper's target, in the order they are tried.
 /// `bent`: whether the flank bends away, when that alone does not keep the
 /// vertex at rest (bendOnlyMarks).
-inline Verdict anyAtTarget(const InsertedVertexSource &src, const Plane *planes,
+inline Refusal anyAtTarget(const InsertedVertexSource &src, const Plane *planes,
                            const SupportPlanes &support, const SharpenOptions &opt,
-                           const Vec3 &target, bool &bent) {
-  if (Verdict v = flankBendsAway(src, planes, support, opt, target)) {
-    if (!bendOnlyMarks(src, support, opt, target)) return v;
+                           const PlacementPolicy &policy, const Vec3 &target, bool &bent) {
+  if (Refusal v = flankBendsAway(src, planes, support, opt, target)) {
+    if (!bendOnlyMarks(src, support, policy, target)) return v;
     bent = true;
   }
-  if (Verdict v = passesIntermediateRegion(src, planes, support, opt, target)) return v;
-  if (Verdict v = apexTooHigh(src, planes, opt, target)) return v;
+  if (Refusal v = passesIntermediateRegion(src, planes, support, opt, target)) return v;
+  if (Refusal v = apexTooHigh(src, planes, opt, target)) return v;
   return displacementTooLarge(src, support, opt, target);
 }
 
 }  // namespace veto
 
 /// Where the planes put one inserted vertex, before the edge-length check:
-/// the paper's placement, and for the extended method its vetoes.
+/// the paper's placement, and with policy.vetoes the extended method's vetoes.
 /// \return the outcome and, for Placement::Moved, the target in `target` and
 ///         in `bent` whether a flank bends away before it (veto::anyAtTarget).
 inline Placement proposePlacement(const InsertedVertexSource &src, const SupportPlanes &support,
-                                  const SharpenOptions &opt, Vec3 &target, bool &bent,
+                                  const SharpenOptions &opt, const PlacementPolicy &policy,
+                                  Vec3 &target, bool &bent,
                                   const OwnPlaneTurns &typicalTurns = {}) {
   bent = false;
   Plane planes[3];
@@ -499,16 +516,16 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
     planes[i] = support.plane(src.original[i]);
     if (planes[i].normal.SquaredNorm() == 0) return Placement::NoSupportPlane;
   }
-  const bool extended = usesFeatureZones(opt.method);
-  if (extended)
-    if (veto::Verdict v = veto::regionsTurnLikeABlend(src, planes, support, opt)) return *v;
-  const Placement paper = paperPlacement(src, planes, opt, target);
-  if (!extended || paper != Placement::Moved) return paper;
-  const Placement verdict =
-      veto::anyAtTarget(src, planes, support, opt, target, bent).value_or(Placement::Moved);
-  if (verdict == Placement::Moved)
-    detail::onRegionPlanes(src, support, opt, target, typicalTurns.typicalRad(src, support));
-  return verdict;
+  if (policy.vetoes)
+    if (veto::Refusal v = veto::regionsTurnLikeABlend(src, planes, support, opt)) return *v;
+  const Placement paper = paperPlacement(src, planes, policy.paper, target);
+  if (!policy.vetoes || paper != Placement::Moved) return paper;
+  const Placement outcome =
+      veto::anyAtTarget(src, planes, support, opt, policy, target, bent).value_or(Placement::Moved);
+  if (outcome == Placement::Moved)
+    detail::onRegionPlanes(src, support, policy.paper, target,
+                           typicalTurns.typicalRad(src, support));
+  return outcome;
 }
 
 /// Edge-length check (paper, Figure 7): an inserted vertex may not create an
@@ -560,7 +577,7 @@ std::size_t enforceEdgeLength(MeshType &m, const SplitPlan &plan, MeshLabels<Mes
 template <class MeshType>
 void placeInsertedVertices(MeshType &m, const SplitPlan &plan, MeshLabels<MeshType> &labels,
                            double longestEdge, const SharpenOptions &opt,
-                           const SupportPlanes &support) {
+                           const PlacementPolicy &policy, const SupportPlanes &support) {
   using Scalar = typename MeshType::ScalarType;
   const std::size_t n0 = plan.originalVertexCount;
   std::vector<Vec3> insertedPos(plan.inserted.size());
@@ -570,15 +587,13 @@ void placeInsertedVertices(MeshType &m, const SplitPlan &plan, MeshLabels<MeshTy
     Vec3 target;
     bool bent = false;
     const Placement p =
-        proposePlacement(plan.inserted[k], support, opt, target, bent, typicalTurns);
+        proposePlacement(plan.inserted[k], support, opt, policy, target, bent, typicalTurns);
     if (p == Placement::Moved) insertedPos[k] = target;
     labels.placement[n0 + k] = p;
     labels.bentFlank[n0 + k] = p == Placement::Moved && bent;
   }
-  if (opt.edgeLengthCheck) {
-    const double factor = usesFeatureZones(opt.method) ? opt.extendedEdgeLengthFactor : 1.0;
-    enforceEdgeLength(m, plan, labels, insertedPos, factor * longestEdge);
-  }
+  if (opt.edgeLengthCheck)
+    enforceEdgeLength(m, plan, labels, insertedPos, policy.edgeLengthFactor * longestEdge);
   for (std::size_t k = 0; k < plan.inserted.size(); ++k)
     m.vert[n0 + k].P() = vcg::Point3<Scalar>::Construct(insertedPos[k]);
 }

@@ -4,21 +4,17 @@
 
 #include <vcg/complex/complex.h>
 
-#include <optional>
-#include <tuple>
 #include <type_traits>
 #include <vector>
 // (vcglib's algorithm headers need complex.h first)
 #include <vcg/complex/algorithms/update/normal.h>
 
+#include "../auto_method.h"
 #include "../cleanup.h"
 #include "../colorize.h"
-#include "../extended/plane_patches.h"
 #include "../extended_method.h"
 #include "../filters.h"
-#include "../guards/feature_evidence.h"
 #include "../guards/intersection_guard.h"
-#include "../guards/planar_folds.h"
 #include "../guards/vertex_moves.h"
 #include "../option_table.h"
 #include "../placement.h"
@@ -51,24 +47,31 @@ double longestEdgeLength(MeshType &m) {
   return std::sqrt(longest2);
 }
 
-/// Smooth-edge test, then detection by the chosen method: the paper's six
-/// filters, or the extended method's feature zones. Fills zones.support with
-/// the support plane of every original vertex that places an inserted one
-/// (and, for the extended method, the rest of `zones`).
+/// The paper's detection: the smooth-edge test, then the six filters; the
+/// support plane of every original vertex that places an inserted one.
 template <class MeshType>
-void detect(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
-            SharpenReport &report, FeatureZones &zones) {
+SupportPlanes detectByFilters(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
+                              SharpenReport &report) {
   reportProgress(opt, 5, "Edge-Sharpener: smooth edges");
   computeFaceNormals(m, labels);
   report.smooth = labelSmoothEdges(m, labels, opt.smoothMultiplier);
-  if (usesFeatureZones(opt.method)) {
-    reportProgress(opt, 20, "Edge-Sharpener: feature zones");
-    detectFeatureZones(m, labels, opt, report, zones);
-    return;
-  }
   reportProgress(opt, 20, "Edge-Sharpener: six filters");
   report.filters = runSixFilters(m, labels);
-  zones.support = paperSupportPlanes(m, labels);
+  return paperSupportPlanes(m, labels);
+}
+
+/// The extended method's detection: the smooth-edge test, then the feature
+/// zones between segmented smooth regions (support planes included).
+template <class MeshType>
+FeatureZones detectByZones(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
+                           SharpenReport &report) {
+  reportProgress(opt, 5, "Edge-Sharpener: smooth edges");
+  computeFaceNormals(m, labels);
+  report.smooth = labelSmoothEdges(m, labels, opt.smoothMultiplier);
+  reportProgress(opt, 20, "Edge-Sharpener: feature zones");
+  FeatureZones zones;
+  detectFeatureZones(m, labels, opt, report, zones);
+  return zones;
 }
 
 template <class MeshType>
@@ -151,44 +154,8 @@ void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
   reportProgress(opt, 100, "Edge-Sharpener: done");
 }
 
-/// Auto method, on a rough input (a fused scan: its noise above the smooth
-/// bound) left whole: the vertices labelled with its planar regions onto
-/// their planes, on the regions' faces, and the vertices bulged beyond a
-/// convex edge or corner behind its planes (flattenPlanarRegions, within
-/// kFlattenMaxSpacings). Where that moved a share of the vertices
-/// (kGrownPlanesEvidence: the planes bulge as a fused scan's do; an exact
-/// mesh's planes move none), the same again on planes grown face by face
-/// (growPlanePatches), which the segmentation may have merged across a
-/// rounded edge. \return the number of vertices moved and of planes grown.
-template <class MeshType>
-std::pair<std::size_t, std::size_t> flattenRoughPlanes(MeshType &m, const FeatureZones &zones,
-                                                       const SurfaceMeasures &surface,
-                                                       const SharpenOptions &opt) {
-  if (!opt.flattenRoughPlanes || zones.support.regionPlanes.empty() ||
-      !(surface.noiseSpacings > opt.maxSmoothNoiseSpacings))
-    return {0, 0};
-  const double spacing = spacingUnit(zones.support);
-  const double minMove = kFlattenMinSpacings * spacing, maxMove = kFlattenMaxSpacings * spacing;
-  const int outward = outwardSign(m);
-  const VertexFaceTable vf(m);  // the flattening moves vertices only
-  using Coord = typename MeshType::CoordType;
-  std::vector<Coord> input(m.vert.size());
-  for (std::size_t v = 0; v < m.vert.size(); ++v) input[v] = m.vert[v].cP();
-  const std::size_t onRegions =
-      flattenPlanarRegions(m, vf, zones, zones.support.regionPlanes, minMove, maxMove, outward);
-  std::size_t grown = 0;
-  if (double(onRegions) >= kGrownPlanesEvidence * double(m.vn)) {
-    PlanePatchSettings settings;
-    settings.maxTurnRad = settings.pairAngleRad = opt.minFeatureAngleRad;
-    const PlanePatches patches = growPlanePatches(m, vf, spacing, settings);
-    grown = patches.count();
-    flattenPlanarRegions(m, vf, patches.labels, patches.planes, minMove, maxMove, outward);
-  }
-  std::size_t moved = 0;
-  for (std::size_t v = 0; v < m.vert.size(); ++v) moved += !(m.vert[v].cP() == input[v]);
-  return {moved, grown};
-}
-
+/// Checks the mesh and the options (InputError otherwise, the mesh
+/// untouched); the report's input counts.
 template <class MeshType>
 SharpenReport validate(MeshType &m, const SharpenOptions &opt) {
   vcg::tri::RequireFFAdjacency(m);
@@ -203,14 +170,100 @@ SharpenReport validate(MeshType &m, const SharpenOptions &opt) {
   return report;
 }
 
+/// validate(), for a run that changes the mesh.
+template <class MeshType>
+SharpenReport startSharpening(MeshType &m, const SharpenOptions &opt) {
+  SharpenReport report = validate(m, opt);
+  report.geometryChanged = true;
+  return report;
+}
+
+/// The paper's method (section 3): six filters, split, place, clean up.
+template <class MeshType>
+SharpenReport sharpenPaper(MeshType &m, const SharpenOptions &opt) {
+  SharpenReport report = startSharpening(m, opt);
+  MeshLabels<MeshType> labels(m);
+  const SupportPlanes support = detectByFilters(m, labels, opt, report);
+  reportProgress(opt, 40, "Edge-Sharpener: subdivision");
+  const SplitPlan plan = planSplits(m, labels);
+  report.subdivision = subdivide(m, plan, labels);
+  VertexMoves<MeshType> moves(m, plan, labels, /*originalsMayMove=*/false);
+  reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
+  placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt,
+                        PlacementPolicy::paperMethod(opt), support);
+  reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
+  report.cleanup = removeDegenerateTriangles(m, moves, opt.degenerateAngleRad);
+  report.intersections =
+      revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
+  countOutcomes(moves, report);
+  finish(m, labels, opt, report);
+  return report;
+}
+
+/// The extended method: feature zones of any width, their vertices projected
+/// onto their regions' planes beside the restored edges.
+template <class MeshType>
+SharpenReport sharpenExtended(MeshType &m, const SharpenOptions &opt) {
+  SharpenReport report = startSharpening(m, opt);
+  MeshLabels<MeshType> labels(m);
+  const FeatureZones zones = detectByZones(m, labels, opt, report);
+  reportProgress(opt, 40, "Edge-Sharpener: subdivision");
+  const SplitPlan plan = planSplits(m, labels);
+  report.subdivision = subdivide(m, plan, labels);
+  VertexMoves<MeshType> moves(m, plan, labels, /*originalsMayMove=*/true);
+  reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
+  placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt,
+                        PlacementPolicy::extendedMethod(opt), zones.support);
+  refineExtendedPlacement(m, moves, zones, opt, report);
+  reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
+  report.cleanup = removeDegenerateTriangles(m, moves, opt.degenerateAngleRad);
+  report.intersections =
+      revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
+  countOutcomes(moves, report);
+  finish(m, labels, opt, report);
+  return report;
+}
+
+/// The auto method: the extended method, each feature restored only on
+/// strong evidence (auto_method.h; its rules: rulebook.h).
+template <class MeshType>
+SharpenReport sharpenAuto(MeshType &m, const SharpenOptions &opt) {
+  SharpenReport report = startSharpening(m, opt);
+  MeshLabels<MeshType> labels(m);
+  const FeatureZones zones = detectByZones(m, labels, opt, report);
+  reportProgress(opt, 40, "Edge-Sharpener: subdivision");
+  AutoMethod<MeshType> autoMethod(m, zones, opt);
+  const SplitPlan plan = planSplits(m, labels);
+  report.subdivision = subdivide(m, plan, labels);
+  VertexMoves<MeshType> moves(m, plan, labels, /*originalsMayMove=*/true);
+  reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
+  placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt,
+                        PlacementPolicy::autoMethod(opt), zones.support);
+  refineExtendedPlacement(m, moves, zones, opt, report);
+  autoMethod.judgeFeatures(moves, report.longestInputEdge);
+  reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
+  const GuardStats guards = autoMethod.runGuards(moves, labels, report.longestInputEdge);
+  report.cleanup = guards.cleanup;
+  report.planarFolds = guards.planarFolds;
+  report.intersections = guards.intersections;
+  countOutcomes(moves, report);
+  autoMethod.giveBackResting(moves);
+  report.evidenceGuard = true;
+  report.evidence = autoMethod.stats();
+  finish(m, labels, opt, report);
+  return report;
+}
+
 }  // namespace detail
 
 template <class MeshType>
 SharpenReport detectChamfers(MeshType &m, const SharpenOptions &opt) {
   SharpenReport report = detail::validate(m, opt);
   MeshLabels<MeshType> labels(m);
-  FeatureZones zones;
-  detail::detect(m, labels, opt, report, zones);
+  if (opt.method == Method::Paper)
+    detail::detectByFilters(m, labels, opt, report);
+  else
+    detail::detectByZones(m, labels, opt, report);
   colorize(m, labels);
   selectChamferFaces(m, labels);
   report.outputVertices = m.vert.size();
@@ -222,64 +275,10 @@ SharpenReport detectChamfers(MeshType &m, const SharpenOptions &opt) {
 template <class MeshType>
 SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   detail::requireColours(m, opt);
-  SharpenReport report = detail::validate(m, opt);
-  report.geometryChanged = true;
-  MeshLabels<MeshType> labels(m);
-  FeatureZones zones;
-  detail::detect(m, labels, opt, report, zones);
-
-  detail::reportProgress(opt, 40, "Edge-Sharpener: subdivision");
-  std::optional<InputFaces<MeshType>> input;  // the auto method may give it back whole
-  SurfaceMeasures surface;
-  if (opt.method == Method::Auto) {
-    input.emplace(m);
-    surface = measureSurface(m, zones.inputFaces, zones.faceRegion, zones.support.sampleSpacing);
-  }
-  const SplitPlan plan = planSplits(m, labels);
-  report.subdivision = subdivide(m, plan, labels);
-  VertexMoves<MeshType> moves(m, plan, labels, usesFeatureZones(opt.method));
-
-  detail::reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
-  placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt, zones.support);
-  if (usesFeatureZones(opt.method)) refineExtendedPlacement(m, moves, zones, opt, report);
-  std::optional<EvidenceGuard<MeshType>> evidence;
-  if (input) {
-    evidence.emplace(m, moves, zones.support, InputSurface{zones.inputFaces, input->faceVertices()},
-                     surface, report.longestInputEdge, opt);
-    report.evidenceGuard = true;
-    report.evidence = evidence->revertWeakFeatures();
-  }
-
-  detail::reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
-  std::optional<ElementSnapshot<MeshType>> beforeGuards;
-  if (input) beforeGuards.emplace(m, labels);
-  report.cleanup = removeDegenerateTriangles(m, moves, opt.degenerateAngleRad,
-                                             /*onlyWhereMoved=*/input.has_value());
-  if (input)
-    report.planarFolds = unfoldPlanarPatches(
-        m, [&](std::size_t v) { return !moves.isAtRest(v); },
-        kFoldPlaneSpacings * spacingUnit(zones.support), opt.degenerateAngleRad);
-  report.intersections =
-      revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge,
-                              evidence ? &evidence->retreatFirst() : nullptr);
-  if (evidence && evidence->leaveMeshIfGuardsRefused(*beforeGuards, report.evidence)) {
-    report.cleanup = {};  // undone
-    report.intersections = {};
-  }
-  detail::countOutcomes(moves, report);
-  if (input) {
-    const int verticesBefore = m.vn, facesBefore = m.fn;
-    report.evidence.facesGivenBack = input->unsplitResting(m, moves);
-    report.evidence.restingVerticesRemoved =
-        InputFaces<MeshType>::dissolveRestingEdgeVertices(m, moves);
-    report.evidence.verticesRemoved = std::size_t(verticesBefore - m.vn);
-    report.evidence.facesRemoved = std::size_t(facesBefore - m.fn);
-    if (report.evidence.wholeMeshLeft)
-      std::tie(report.evidence.flattenedVertices, report.evidence.grownPlanes) =
-          detail::flattenRoughPlanes(m, zones, surface, opt);
-  }
-  detail::finish(m, labels, opt, report);
-  return report;
+  const auto pipeline = opt.method == Method::Paper      ? detail::sharpenPaper<MeshType>
+                        : opt.method == Method::Extended ? detail::sharpenExtended<MeshType>
+                                                         : detail::sharpenAuto<MeshType>;
+  return pipeline(m, opt);
 }
 
 }  // namespace edge_sharpener

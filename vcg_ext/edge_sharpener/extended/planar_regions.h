@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "../rulebook.h"
 #include "../util/fast_topology.h"
 #include "../util/geometry.h"
 #include "../util/parallel.h"
@@ -23,22 +24,6 @@
 #include "zones.h"
 
 namespace edge_sharpener {
-
-/// When a region counts as a plane (planarRegionPlanes).
-struct PlanarRegionSettings {
-  /// The core: the region's faces whose vertices all lie at least this many
-  /// hops from the feature zone (beyond the rounding of a reconstruction).
-  int coreHops = 3;
-  /// A core of fewer faces tells nothing.
-  int minCoreFaces = 20;
-  /// The core's faces' centroids lie within this RMS distance of its plane
-  /// (noise; in sample spacings)...
-  double maxRmsSpacings = 0.25;
-  /// ...and the mean normals of its two halves, split across either
-  /// principal axis of its extent, turn by at most this angle (a curved
-  /// region bends; noise averages out).
-  double maxBendRad = 3.0 * M_PI / 180.0;
-};
 
 namespace detail {
 
@@ -228,13 +213,6 @@ std::vector<Plane> planarRegionPlanes(const MeshType &m, const VertexFaceTable &
   return plane;
 }
 
-/// How far flattenPlanarRegions moves a vertex at most, in sample spacings:
-/// a scan's bulge beside an edge; a vertex farther off is the region's own
-/// shape. A vertex nearer its plane than the least move lies on it (the
-/// fit's rounding on an exact mesh): it stays.
-inline constexpr double kFlattenMaxSpacings = 2.0;
-inline constexpr double kFlattenMinSpacings = 1e-3;
-
 /// +1 when the faces of the closed mesh `m` face outwards (its signed
 /// volume is positive), else -1: the side of a plane that is outside.
 template <class MeshType>
@@ -244,23 +222,6 @@ int outwardSign(const MeshType &m) {
     if (!f.IsD()) volume6 += positionOf(f.cV(0)) * (positionOf(f.cV(1)) ^ positionOf(f.cV(2)));
   return volume6 >= 0 ? 1 : -1;
 }
-
-/// How many rings of vertices around a vertex flattenPlanarRegions reads for
-/// its region's own samples and for the other regions' planes.
-inline constexpr int kFlattenRings = 3;
-
-/// How many rings of vertices flattenPlanarRegions reads around a vertex for
-/// the planes of the convex edge or corner a bulge rises beyond: past a
-/// fused scan's feature zone, widest at corners, to the faces' own vertices.
-inline constexpr int kFlattenCornerRings = 6;
-
-/// The share of a rough input's vertices that flattening onto its regions'
-/// planes must move before planes grown face by face are flattened too
-/// (flattenRoughPlanes): the planes bulge as a fused scan's do.
-inline constexpr double kGrownPlanesEvidence = 0.01;
-
-/// Planes nearer parallel than this meet on no edge for flattenPlanarRegions.
-inline constexpr double kFlattenParallelAngleRad = 5.0 * M_PI / 180.0;
 
 namespace detail {
 
@@ -364,7 +325,7 @@ std::optional<Vec3> behindConvexPlanes(const MeshType &m, const FeatureZones &zo
           farthestOutside(positionOf(&m.vert[u])) > maxMove)
         return std::nullopt;
   const std::optional<Vec3> target =
-      nearestPointBehindPlanes(p, planes, minMove, kFlattenParallelAngleRad);
+      nearestPointBehindPlanes(p, planes, minMove, RoughInputRules::kFlattenParallelAngleRad);
   if (!target || !((*target - p).Norm() <= 2 * maxMove)) return std::nullopt;
   return target;
 }
@@ -376,7 +337,7 @@ std::optional<Vec3> behindConvexPlanes(const MeshType &m, const FeatureZones &zo
 /// or a zone vertex, onto that plane when it lies outside it (on the side its
 /// normal times `outward` points to: outwardSign) by more than `minMove` and
 /// at most `maxMove`, and when the point it moves to is on the region's face:
-/// on the side of every other region's plane nearby (kFlattenRings) where the
+/// on the side of every other region's plane nearby (RoughInputRules::kFlattenRings) where the
 /// region's own vertices nearby lie (onSideOf). A fused scan (a TSDF)
 /// inflates its planes and bulges them outwards for a few samples beside
 /// every edge; the regions' cores fix the planes. A vertex inside its plane
@@ -387,7 +348,7 @@ std::optional<Vec3> behindConvexPlanes(const MeshType &m, const FeatureZones &zo
 /// label of a small region that is no plane, or none: a vertex whose place
 /// on its own plane lies off its face, and a vertex of no planar region,
 /// moves to the nearest point behind the planes of the planar regions
-/// around it (kFlattenCornerRings; detail::behindConvexPlanes). That point
+/// around it (RoughInputRules::kFlattenCornerRings; detail::behindConvexPlanes). That point
 /// lies nearer every point of the solid behind them than the vertex did.
 /// Decided on the positions as they were. `vf`: the faces of each vertex of
 /// `m` as it is. \return the number moved.
@@ -423,13 +384,13 @@ std::size_t flattenPlanarRegions(MeshType &m, const VertexFaceTable &vf, const F
         const double offset = own->normal * (p - own->point);
         if (!(outward * offset > minMove && std::abs(offset) <= maxMove)) continue;
         const Vec3 target = p - own->normal * offset;
-        walkAround(v, kFlattenRings);
+        walkAround(v, RoughInputRules::kFlattenRings);
         if (detail::onRegionFace(m, zones, regionPlanes, r, target, around)) {
           moves.emplace_back(v, target);
           continue;
         }
       }
-      walkAround(v, kFlattenCornerRings);
+      walkAround(v, RoughInputRules::kFlattenCornerRings);
       if (const std::optional<Vec3> target = detail::behindConvexPlanes(
               m, zones, regionPlanes, v, around, minMove, maxMove, outward))
         moves.emplace_back(v, *target);

@@ -25,7 +25,7 @@ struct PlaneFitSettings {
   double trimRad = 0;  ///< SharpenOptions::fitTrimAngleRad
 
   static PlaneFitSettings from(const SharpenOptions &opt) {
-    return {opt.supportRings, opt.fitTrimAngleRad};
+    return {opt.extended.supportRings, opt.extended.fitTrimAngleRad};
   }
 };
 

@@ -136,7 +136,7 @@ inline bool noFartherFromPlanes(const std::array<const Plane *, 4> &planes, int 
 /// that borders a sharpened edge (`nearSharpEdge`) onto its region's plane,
 /// the surface it samples: marching cubes and similar samplers leave such
 /// vertices on the rounded band. A move longer
-/// than `opt.maxProjectionFactor` x the vertex's mean edge length, or one
+/// than `opt.extended.maxProjectionFactor` x the vertex's mean edge length, or one
 /// that would flip an incident face or create an angle below the
 /// degenerate threshold, is not made. Then the planes of the other regions
 /// near it are tried, closest first, where the move leaves the vertex no
@@ -169,7 +169,8 @@ std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::siz
     const int planeCount = detail::projectionPlanes(zones.support, v, planes);
     // A move below the mesh's float resolution changes nothing: not counted.
     if (vcg::Point3<Scalar>::Construct(projectOntoPlane(*planes[0], p)) == m.vert[v].cP()) continue;
-    const double maxStep = detail::maxProjectionStep(m, faces, v, p, opt.maxProjectionFactor);
+    const double maxStep =
+        detail::maxProjectionStep(m, faces, v, p, opt.extended.maxProjectionFactor);
     const double tolerance = 1e-9 * zones.support.sampleSpacing;
     std::optional<Vec3> chosen;
     for (int i = 0; i < planeCount && !chosen; ++i) {

@@ -15,6 +15,7 @@
 #include "../util/parallel.h"
 #include "planar_regions.h"
 #include "plane_fit.h"
+#include "segmentation.h"
 #include "zones.h"
 
 namespace edge_sharpener {
@@ -98,15 +99,7 @@ void labelRegionVertices(const MeshType &m, const VertexFaceTable &vf, FeatureZo
   const std::int64_t count = std::int64_t(m.vert.size());
 #pragma omp parallel for schedule(static, 8192) if (count > kParallelMin)
   for (std::int64_t v = 0; v < count; ++v) {
-    int label = kZone;
-    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
-      const int r = zones.faceRegion[*fi];
-      if (r == kZone) continue;
-      if (label == kZone)
-        label = r;
-      else if (label != r)
-        label = kCrease;
-    }
+    const int label = regionAtVertex(vf, zones, v);
     zones.vertexLabel[v] = label;
     zones.inRegion[v] = label != kZone;
   }
@@ -153,7 +146,7 @@ struct ZoneCandidates {
 
 /// Breadth-first waves from every fitted region vertex into the zone; each
 /// zone vertex keeps the first arrival of up to four regions, within
-/// `opt.labelSlackHops` of the first, at most `opt.maxLabelHops` away.
+/// `opt.extended.labelSlackHops` of the first, at most `opt.extended.maxLabelHops` away.
 template <class MeshType>
 ZoneCandidates offerRegions(const MeshType &m, const VertexFaceTable &vf, const SharpenOptions &opt,
                             const FeatureZones &zones, const std::vector<std::uint32_t> &fitted,
@@ -169,20 +162,21 @@ ZoneCandidates offerRegions(const MeshType &m, const VertexFaceTable &vf, const 
   while (!queue.empty()) {
     const auto [v, c] = queue.front();
     queue.pop_front();
-    if (c.hops >= opt.maxLabelHops) continue;
+    if (c.hops >= opt.extended.maxLabelHops) continue;
     forEachNeighbour(m, vf, v, [&, c = c](std::size_t u) {
       const std::uint32_t slot = zoneSlot[u];
       if (slot == kNotZone) return;
       auto &list = cand.list[slot];
       std::uint8_t &n = cand.count[slot];
       if (n == kMaxLabelCandidates) return;
-      if (n > 0 && c.hops + 1 > list[0].hops + opt.labelSlackHops) return;
+      if (n > 0 && c.hops + 1 > list[0].hops + opt.extended.labelSlackHops) return;
       // One candidate per surface: a region that leaked around a fading
       // feature offers one per plane direction.
       for (std::uint8_t i = 0; i < n; ++i)
         if (list[i].region == c.region &&
             !planesTurnApart(zones.support.plane(list[i].anchor).normal,
-                             zones.support.plane(c.anchor).normal, opt.sameRegionFeatureAngleRad))
+                             zones.support.plane(c.anchor).normal,
+                             opt.extended.sameRegionFeatureAngleRad))
           return;
       list[n++] = LabelCandidate{c.region, c.anchor, c.hops + 1};
       queue.push_back({std::uint32_t(u), list[n - 1]});
@@ -219,7 +213,7 @@ void labelByNearestPlane(const MeshType &m, const std::vector<std::uint32_t> &zo
 
 /// Labels every vertex: region vertices with their region (kCrease where
 /// several regions meet), zone vertices with the nearby region (within
-/// `opt.labelSlackHops` of the closest one, at most `opt.maxLabelHops` away)
+/// `opt.extended.labelSlackHops` of the closest one, at most `opt.extended.maxLabelHops` away)
 /// whose local plane is nearest; fills each labelled vertex's plane.
 template <class MeshType>
 void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const SharpenOptions &opt,
@@ -240,7 +234,7 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
   }
   stats.zoneVertices += zone.size();
   detail::fitPlanesAtZone(m, vf, fitted, PlaneFitSettings::from(opt), zones);
-  if (opt.regionPlanes) {
+  if (opt.extended.regionPlanes) {
     zones.support.regionPlanes =
         planarRegionPlanes(m, vf, zones, touchesZone, zones.support.sampleSpacing, {});
     for (const Plane &p : zones.support.regionPlanes)
@@ -248,7 +242,7 @@ void labelZoneVertices(const MeshType &m, const VertexFaceTable &vf, const Sharp
   }
   const detail::ZoneCandidates cand = detail::offerRegions(m, vf, opt, zones, fitted, zone);
   detail::labelByNearestPlane(m, zone, cand, zones, stats);
-  collectNearbyRegions(m, vf, zones, opt.supportRings);
+  collectNearbyRegions(m, vf, zones, opt.extended.supportRings);
 }
 
 /// Marks the chamfer edges and faces of the extended method in the paper's

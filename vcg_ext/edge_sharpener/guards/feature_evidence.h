@@ -254,8 +254,8 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
   for (std::size_t c = 0; c < features.size(); ++c) {
     features[c].maxOffPlane =
         offPlane[c].empty() ? 0 : *std::max_element(offPlane[c].begin(), offPlane[c].end());
-    features[c].offPlaneQ90 = detail::quantileOf(offPlane[c], 0.9);
-    features[c].offPlaneMedian = detail::quantileOf(offPlane[c], 0.5);
+    features[c].offPlaneQ90 = detail::quantileOf(offPlane[c], FeatureRules::kOnPlaneQuantile);
+    features[c].offPlaneMedian = detail::quantileOf(offPlane[c], FeatureRules::kMedianQuantile);
     features[c].flankAngleRad = angles[c].empty() ? M_PI / 2 : detail::medianOf(angles[c]);
     features[c].lineChamferAngleRad = lineAngles[c].empty() ? 0 : detail::medianOf(lineAngles[c]);
   }
@@ -294,7 +294,7 @@ std::vector<double> liftsOfMoves(const MeshType &m, const VertexMoves<MeshType> 
 /// wall, a narrow slot). Pure.
 inline bool crossesSheet(double ownDistance, const Vec3 &ownNormal, double otherDistance,
                          const Vec3 &otherNormal) {
-  return otherDistance < ownDistance && otherNormal * ownNormal < -0.5;
+  return otherDistance < ownDistance && otherNormal * ownNormal < FeatureRules::kOtherSheetMaxCos;
 }
 
 /// Counts, per feature, its moved inserted vertices whose target crosses to
@@ -347,7 +347,7 @@ void countSheetCrossings(const MeshType &m, const VertexMoves<MeshType> &moves,
         const double area2 = n.Norm();
         if (!(area2 > 0)) return;
         n /= area2;
-        if (n * queries[q].normal >= -0.5) return;  // cheap test first
+        if (n * queries[q].normal >= FeatureRules::kOtherSheetMaxCos) return;  // cheap test first
         double d;
         Vec3 closest;
         vcg::TrianglePointDistance(t, queries[q].target, d, closest);
@@ -383,12 +383,12 @@ inline void measureFeatureLifts(const std::vector<double> &lifts,
 
 /// Whether the mesh is sampled exactly on its surface: its median edge
 /// feature that moved, weighted by its new vertices, has nine in ten of its
-/// source vertices within opt.exactSamplingSpacings of their planes (a
+/// source vertices within opt.rules.mesh.exactSamplingSpacings of their planes (a
 /// remesher that casts or reprojects its vertices onto the input). A
 /// sampler that cuts its own chamfers (marching cubes, a voxel remesher)
 /// leaves most features' samples measurably off near the edge. Pure.
 inline bool sampledExactly(const std::vector<Feature> &features, const SharpenOptions &opt) {
-  if (!(opt.exactSamplingSpacings > 0)) return false;
+  if (!(opt.rules.mesh.exactSamplingSpacings > 0)) return false;
   std::vector<std::pair<double, std::size_t>> q90;  // (offPlaneQ90, new vertices)
   std::size_t total = 0;
   for (const Feature &f : features)
@@ -401,48 +401,53 @@ inline bool sampledExactly(const std::vector<Feature> &features, const SharpenOp
   std::size_t below = 0;
   for (const auto &[q, vertices] : q90) {
     below += vertices;
-    if (2 * below >= total) return q <= opt.exactSamplingSpacings;
+    if (2 * below >= total) return q <= opt.rules.mesh.exactSamplingSpacings;
   }
   return false;
 }
 
 /// Whether a sample `offPlaneSpacings` from its plane is a point of the
 /// surface rather than the sampler's cut: on a mesh sampled exactly
-/// (sampledExactly), farther than opt.onPlaneSpacings. Pure.
+/// (sampledExactly), farther than opt.rules.feature.onPlaneSpacings. Pure.
 inline bool offPlaneIsSurface(double offPlaneSpacings, const SharpenOptions &opt,
                               bool exactSampling) {
-  return exactSampling && opt.onPlaneSpacings > 0 && offPlaneSpacings > opt.onPlaneSpacings;
+  return exactSampling && opt.rules.feature.onPlaneSpacings > 0 &&
+         offPlaneSpacings > opt.rules.feature.onPlaneSpacings;
 }
 
-/// Whether a feature has too little evidence to be sharpened: too short to
-/// be a feature, an edge whose flanks meet at too shallow an angle or on a
-/// line that crosses its chamfer instead of running along it, most of its
-/// vertices refused by the other tests, or one of its samples far off the
-/// plane its flank extrapolates, unless nine in ten of them lie on their
-/// planes, or half of them do and none lies much farther, both bounds times
-/// the sine of the angle its flanks meet at (then only the far samples' new
-/// vertices stay at rest: EvidenceGuard::vertexIsWeak). On a mesh sampled
-/// exactly (sampledExactly), also when half of its samples lie off their
-/// planes: the surface runs there, a designed bevel or blend.
-inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt,
-                                  bool exactSampling = false) {
-  if (offPlaneIsSurface(f.offPlaneMedian, opt, exactSampling)) return true;
-  if (!f.corner && f.vertices < std::size_t(opt.minFeatureVertices)) return true;
-  if (!f.corner && f.flankAngleRad < opt.minFeatureAngleRad) return true;
-  if (!f.corner && opt.maxFeatureLineChamferAngleRad > 0 &&
-      f.lineChamferAngleRad > opt.maxFeatureLineChamferAngleRad)
-    return true;
-  const bool sampledOnItsPlanes = opt.onPlaneSpacings > 0 && f.offPlaneQ90 <= opt.onPlaneSpacings;
+/// The judgement of one feature on its own evidence (Verdict::Restored, or
+/// the first rule it fails, in this order): on a mesh sampled exactly
+/// (sampledExactly), half of its samples off their planes (the surface runs
+/// there: a designed bevel or blend); too short to be a feature; an edge
+/// whose flanks meet at too shallow an angle, or on a line that crosses its
+/// chamfer instead of running along it; one of its samples far off the plane
+/// its flank extrapolates, unless nine in ten of them lie on their planes, or
+/// half of them do and none lies much farther, both bounds times the sine of
+/// the angle its flanks meet at (then only the far samples' new vertices stay
+/// at rest: EvidenceGuard::vertexIsWeak); most of its vertices refused by the
+/// other tests. Pure.
+inline Verdict judgeFeature(const Feature &f, const SharpenOptions &opt,
+                            bool exactSampling = false) {
+  const FeatureRules &rule = opt.rules.feature;
+  if (offPlaneIsSurface(f.offPlaneMedian, opt, exactSampling)) return Verdict::OnTheSurface;
+  if (!f.corner && f.vertices < std::size_t(rule.minFeatureVertices)) return Verdict::TooShort;
+  if (!f.corner && f.flankAngleRad < rule.minFeatureAngleRad) return Verdict::ShallowAngle;
+  if (!f.corner && rule.maxFeatureLineChamferAngleRad > 0 &&
+      f.lineChamferAngleRad > rule.maxFeatureLineChamferAngleRad)
+    return Verdict::LineAcrossChamfer;
+  const bool sampledOnItsPlanes = rule.onPlaneSpacings > 0 && f.offPlaneQ90 <= rule.onPlaneSpacings;
   // The line two planes meet on moves by their errors over the sine of the
   // angle between them: an acute edge allows its samples less.
   const double sine = f.corner ? 1.0 : std::sin(f.flankAngleRad);
-  const bool mostlyOnItsPlanes = opt.medianOnPlaneSpacings > 0 &&
-                                 f.offPlaneMedian <= opt.medianOnPlaneSpacings * sine &&
-                                 f.maxOffPlane <= opt.maxMedianOnPlaneOffSpacings * sine;
-  if (f.maxOffPlane > opt.maxFeatureOffPlaneSpacings && !sampledOnItsPlanes && !mostlyOnItsPlanes)
-    return true;
-  return double(f.vertices - f.moved + f.crossed) >
-         opt.maxFeatureFallbackFraction * double(f.vertices);
+  const bool mostlyOnItsPlanes = rule.medianOnPlaneSpacings > 0 &&
+                                 f.offPlaneMedian <= rule.medianOnPlaneSpacings * sine &&
+                                 f.maxOffPlane <= rule.maxMedianOnPlaneOffSpacings * sine;
+  if (f.maxOffPlane > rule.maxFeatureOffPlaneSpacings && !sampledOnItsPlanes && !mostlyOnItsPlanes)
+    return Verdict::OffItsPlanes;
+  if (double(f.vertices - f.moved + f.crossed) >
+      rule.maxFeatureFallbackFraction * double(f.vertices))
+    return Verdict::MostlyRefused;
+  return Verdict::Restored;
 }
 
 /// Whether one new vertex of a feature kept has too little evidence of its
@@ -454,14 +459,15 @@ inline bool featureEvidenceIsWeak(const Feature &f, const SharpenOptions &opt,
 /// line two planes meet on. A corner's point is pinned by three planes, and
 /// an acute corner's move is long by its shape; left alone among sharpened
 /// edges it would be a notch. On a mesh sampled exactly (sampledExactly),
-/// a source off its plane beyond opt.onPlaneSpacings is a point of the
+/// a source off its plane beyond opt.rules.feature.onPlaneSpacings is a point of the
 /// surface and vouches for none of them. Both in sample spacings. Pure.
 inline bool vertexEvidenceIsWeak(double moveSpacings, double sourceOffPlaneSpacings, bool corner,
                                  const SharpenOptions &opt, bool exactSampling = false) {
   if (offPlaneIsSurface(sourceOffPlaneSpacings, opt, exactSampling)) return true;
-  if (sourceOffPlaneSpacings > opt.maxFeatureOffPlaneSpacings) return true;
-  return !corner && opt.longMoveSpacings > 0 && moveSpacings > opt.longMoveSpacings &&
-         sourceOffPlaneSpacings > opt.maxLongMoveOffPlaneSpacings;
+  if (sourceOffPlaneSpacings > opt.rules.feature.maxFeatureOffPlaneSpacings) return true;
+  return !corner && opt.rules.vertex.longMoveSpacings > 0 &&
+         moveSpacings > opt.rules.vertex.longMoveSpacings &&
+         sourceOffPlaneSpacings > opt.rules.vertex.maxLongMoveOffPlaneSpacings;
 }
 
 /// Of the inserted vertices of the features placement moved at all, the
@@ -484,17 +490,18 @@ inline double refusedFraction(const std::vector<Feature> &features) {
 /// is at most `maxSmoothNoiseSpacings` and its planar share at least
 /// `minPlanarAreaFraction`, else the general one.
 inline double refusedBound(const SurfaceMeasures &surface, const SharpenOptions &opt) {
-  const bool smoothPlanes = opt.maxSmoothNoiseSpacings > 0 &&
-                            surface.noiseSpacings <= opt.maxSmoothNoiseSpacings &&
-                            surface.planarFraction >= opt.minPlanarAreaFraction;
-  return smoothPlanes ? std::max(opt.maxRefusedFraction, opt.maxRefusedFractionSmooth)
-                      : opt.maxRefusedFraction;
+  const bool smoothPlanes = opt.rules.mesh.maxSmoothNoiseSpacings > 0 &&
+                            surface.noiseSpacings <= opt.rules.mesh.maxSmoothNoiseSpacings &&
+                            surface.planarFraction >= opt.rules.mesh.minPlanarAreaFraction;
+  return smoothPlanes
+             ? std::max(opt.rules.mesh.maxRefusedFraction, opt.rules.mesh.maxRefusedFractionSmooth)
+             : opt.rules.mesh.maxRefusedFraction;
 }
 
 /// Whether the moves mostly slide along the input instead of lifting it
 /// (their median `lift`, medianLift): a model already sharp. Pure.
 inline bool mostlyAlreadySharp(double lift, const SharpenOptions &opt) {
-  return lift < opt.minMedianLift;
+  return lift < opt.rules.mesh.minMedianLift;
 }
 
 /// Whether feature `f` is left as already sharp on a mesh whose moves mostly
@@ -511,48 +518,53 @@ inline bool leftAsAlreadySharp(const Feature &f, double lift, const SharpenOptio
 /// sampled exactly on its surface (sampledExactly) may be sharp in part: its
 /// sampler puts vertices on the edges it meets (a remesher casting them onto
 /// the input does at convex edges) and leaves the others chamfered, so there
-/// each feature is judged by its own lift (weakFeatures). Pure.
+/// each feature is judged by its own lift (featureVerdicts). Pure.
 inline bool meshEvidenceIsWeak(double refused, double lift, const SurfaceMeasures &surface,
                                const SharpenOptions &opt, bool exactSampling = false) {
   return refused > refusedBound(surface, opt) || (mostlyAlreadySharp(lift, opt) && !exactSampling);
 }
 
-/// Per feature, whether its moves go back: every feature when the mesh as a
-/// whole shows too little evidence (meshEvidenceIsWeak with the moves'
-/// median `lift`), else those whose evidence is weak (featureEvidenceIsWeak,
-/// on a mesh sampled exactly or not) and the corners one of whose edges' is
-/// (a corner is where its edges meet), and, on a mesh sampled exactly and
-/// mostly sharp already, those whose own moves slide along it
-/// (Feature::medianLift; flagged in `alreadySharp` too, when given: their
-/// moves that lift are judged one by one, EvidenceGuard::revertWeakFeatures).
-inline std::vector<char> weakFeatures(const SplitPlan &plan, const std::vector<Feature> &features,
-                                      const std::vector<std::uint32_t> &featureOf, double lift,
-                                      const SurfaceMeasures &surface, const SharpenOptions &opt,
-                                      bool exactSampling = false,
-                                      std::vector<char> *alreadySharp = nullptr) {
-  if (alreadySharp) alreadySharp->assign(features.size(), 0);
+/// Per feature, its verdict: every feature's Verdict::MeshEvidenceWeak when
+/// the mesh as a whole shows too little evidence (meshEvidenceIsWeak with the
+/// moves' median `lift`), else its own (judgeFeature, on a mesh sampled
+/// exactly or not); a corner one of whose edges is left, CornerOfWeakEdge (a
+/// corner is where its edges meet); and, on a mesh sampled exactly and mostly
+/// sharp already, a feature whose own moves slide along it, AlreadySharp
+/// (Feature::medianLift; its moves that lift are judged one by one,
+/// EvidenceGuard::keptMoves).
+inline std::vector<Verdict> featureVerdicts(const SplitPlan &plan,
+                                            const std::vector<Feature> &features,
+                                            const std::vector<std::uint32_t> &featureOf,
+                                            double lift, const SurfaceMeasures &surface,
+                                            const SharpenOptions &opt, bool exactSampling = false) {
   if (meshEvidenceIsWeak(refusedFraction(features), lift, surface, opt, exactSampling))
-    return std::vector<char>(features.size(), 1);
-  std::vector<char> weak(features.size(), 0);
+    return std::vector<Verdict>(features.size(), Verdict::MeshEvidenceWeak);
+  std::vector<Verdict> verdict(features.size());
   for (std::size_t c = 0; c < features.size(); ++c)
-    weak[c] = featureEvidenceIsWeak(features[c], opt, exactSampling);
+    verdict[c] = judgeFeature(features[c], opt, exactSampling);
   // An edge feature's weakness reaches the corner features around its sources;
   // an edge already sharp is no evidence against the corner it runs into.
   std::vector<char> weakSource(plan.originalVertexCount, 0);
   for (std::size_t k = 0; k < plan.inserted.size(); ++k)
-    if (!features[featureOf[k]].corner && weak[featureOf[k]])
+    if (!features[featureOf[k]].corner && isLeft(verdict[featureOf[k]]))
       for (int i = 0; i < plan.inserted[k].originalCount; ++i)
         weakSource[plan.inserted[k].original[i]] = 1;
   for (std::size_t k = 0; k < plan.inserted.size(); ++k)
-    if (features[featureOf[k]].corner)
+    if (features[featureOf[k]].corner && verdict[featureOf[k]] == Verdict::Restored)
       for (int i = 0; i < plan.inserted[k].originalCount; ++i)
-        if (weakSource[plan.inserted[k].original[i]]) weak[featureOf[k]] = 1;
-  for (std::size_t c = 0; c < features.size(); ++c) {
-    const bool sharpAlready = !weak[c] && leftAsAlreadySharp(features[c], lift, opt);
-    if (alreadySharp) (*alreadySharp)[c] = sharpAlready;
-    weak[c] = weak[c] || sharpAlready;
-  }
-  return weak;
+        if (weakSource[plan.inserted[k].original[i]])
+          verdict[featureOf[k]] = Verdict::CornerOfWeakEdge;
+  for (std::size_t c = 0; c < features.size(); ++c)
+    if (verdict[c] == Verdict::Restored && leftAsAlreadySharp(features[c], lift, opt))
+      verdict[c] = Verdict::AlreadySharp;
+  return verdict;
+}
+
+/// The count of each verdict (SharpenReport's evidence.verdicts).
+inline std::array<std::size_t, kVerdictCount> countVerdicts(const std::vector<Verdict> &verdicts) {
+  std::array<std::size_t, kVerdictCount> count{};
+  for (const Verdict v : verdicts) ++count[static_cast<int>(v)];
+  return count;
 }
 
 /// The auto method's guard. The features are grouped once, from the split
@@ -581,12 +593,13 @@ class EvidenceGuard {
 
   /// What the guard judges from the placement: each feature measured
   /// (features()), each move's lift (liftsOfMoves), and which features are
-  /// weak (weakFeatures), with the counts of the report.
+  /// left and why (featureVerdicts), with the counts of the report.
   struct Judgement {
     EvidenceStats stats;
     std::vector<double> lifts;
-    std::vector<char> weak;
-    std::vector<char> alreadySharp;
+    std::vector<Verdict> verdicts;  ///< per feature
+    bool left(std::size_t c) const { return isLeft(verdicts[c]); }
+    bool alreadySharp(std::size_t c) const { return verdicts[c] == Verdict::AlreadySharp; }
   };
 
   /// One inserted vertex's own evidence, in sample spacings: how far it is
@@ -635,10 +648,11 @@ class EvidenceGuard {
     if (!stats.wholeMeshLeft)
       countSheetCrossings(m_, moves_, support_, out.lifts, featureOf_, longestInputEdge_,
                           features_);
-    out.weak = weakFeatures(moves_.plan(), features_, featureOf_, stats.medianLift, surface_, opt_,
-                            exactSampling_, &out.alreadySharp);
+    out.verdicts = featureVerdicts(moves_.plan(), features_, featureOf_, stats.medianLift, surface_,
+                                   opt_, exactSampling_);
+    stats.verdicts = countVerdicts(out.verdicts);
     for (std::size_t c = 0; c < features_.size(); ++c) {
-      if (!out.weak[c] || features_[c].moved == 0) continue;
+      if (!out.left(c) || features_[c].moved == 0) continue;
       ++stats.weakFeatures;
       stats.alreadySharpFeatures +=
           !stats.wholeMeshLeft && leftAsAlreadySharp(features_[c], stats.medianLift, opt_);
@@ -647,7 +661,7 @@ class EvidenceGuard {
   }
 
   /// Sends back to rest every move of the features whose evidence is weak
-  /// (weakFeatures), and of the other features' vertices whose own evidence
+  /// (featureVerdicts), and of the other features' vertices whose own evidence
   /// is weak (vertexIsWeak): their inserted vertices (as Placement::WeakEvidence)
   /// and the zone vertices projected beside them (keptMoves). Of a feature
   /// already sharp (leftAsAlreadySharp) only the moves that slide go back: a
@@ -696,12 +710,12 @@ class EvidenceGuard {
     std::vector<char> kept(count, 0), lifting(count, 0);
     slidingVertex_.assign(count, 0);
     retreatFirst_.assign(m_.vert.size(), 0);
-    const auto sharpAlready = [&](std::size_t k) { return judged.alreadySharp[featureOf_[k]]; };
+    const auto sharpAlready = [&](std::size_t k) { return judged.alreadySharp(featureOf_[k]); };
     for (std::size_t k = 0; k < count; ++k) {
       if (m_.vert[first + k].IsD()) continue;
       // Not moved (lift -1): placement left it, nothing to cut back there.
       lifting[k] = judged.lifts[k] >= 0 && !mostlyAlreadySharp(judged.lifts[k], opt_);
-      kept[k] = (sharpAlready(k) ? lifting[k] : !judged.weak[featureOf_[k]]) && !vertexIsWeak(k);
+      kept[k] = (sharpAlready(k) ? lifting[k] : !judged.left(featureOf_[k])) && !vertexIsWeak(k);
     }
     for (const SplitFace &face : plan.faces) {
       const int corner = face.centerVertex;
@@ -744,6 +758,8 @@ class EvidenceGuard {
       ++(inserted ? stats.reverted : stats.zoneReverted);
     }
     stats.weakFeatures = features_.size();
+    stats.verdicts = {};
+    stats.verdicts[static_cast<int>(Verdict::MeshEvidenceWeak)] = features_.size();
     return true;
   }
 

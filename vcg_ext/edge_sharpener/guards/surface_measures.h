@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "../rulebook.h"
 #include "../util/attributes.h"
 #include "../util/geometry.h"
 #include "../util/statistics.h"
@@ -103,11 +104,6 @@ inline double planarAreaFraction(const std::vector<Vec3> &areaVector,
   return planar / total;
 }
 
-/// A region's face lies on its plane within this angle (radians) of the
-/// region's mean normal: well above a plane's sampling noise, well below
-/// the turn of a curved region over a few samples.
-constexpr double kPlanarAngleRad = 3.0 * M_PI / 180.0;
-
 /// Both measures of an input mesh.
 struct SurfaceMeasures {
   double noiseSpacings = 0;   ///< surfaceNoiseSpacings
@@ -135,7 +131,7 @@ SurfaceMeasures measureSurface(const MeshType &m, const VertexFaceTable &vf,
     areaVector.push_back((b - a) ^ (c - a));
     regionOf.push_back(faceRegion[f]);
   }
-  out.planarFraction = planarAreaFraction(areaVector, regionOf, kPlanarAngleRad);
+  out.planarFraction = planarAreaFraction(areaVector, regionOf, WholeMeshRules::kPlanarAngleRad);
   return out;
 }
 
