@@ -90,17 +90,26 @@ void setCommonCounters(benchmark::State &state, const es::Mesh &m) {
   state.counters["vertices"] = m.vn;
 }
 
-void benchFloor(benchmark::State &state, const std::string &path) {
+/// Times step(m) on one copy of the mesh, run again and again (each run
+/// rebuilds what the one before built).
+template <class Step>
+void benchStep(benchmark::State &state, const std::string &path, Step step) {
   es::Mesh m;
   copyMesh(m, loadMesh(path));
   for (auto _ : state) {
     const auto start = Clock::now();
-    vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m);
-    vcg::tri::UpdateNormal<es::Mesh>::PerFaceNormalized(m);
+    step(m);
     state.SetIterationTime(es::bench::secondsSince(start));
     benchmark::DoNotOptimize(m.face.data());
   }
   setCommonCounters(state, m);
+}
+
+void benchFloor(benchmark::State &state, const std::string &path) {
+  benchStep(state, path, [](es::Mesh &m) {
+    vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m);
+    vcg::tri::UpdateNormal<es::Mesh>::PerFaceNormalized(m);
+  });
 }
 
 /// Stage laps of one sharpen() call, taken at its progress callbacks (a plain
@@ -136,28 +145,12 @@ const char *lapName(int endPercent) {
 
 /// The face-face adjacency of fast_topology.h alone (compare with floor/F).
 void benchFastTopology(benchmark::State &state, const std::string &path) {
-  es::Mesh m;
-  copyMesh(m, loadMesh(path));
-  for (auto _ : state) {
-    const auto start = Clock::now();
-    es::buildFaceFace(m);
-    state.SetIterationTime(es::bench::secondsSince(start));
-    benchmark::DoNotOptimize(m.face.data());
-  }
-  setCommonCounters(state, m);
+  benchStep(state, path, [](es::Mesh &m) { es::buildFaceFace(m); });
 }
 
 /// vcglib's face-face adjacency alone.
 void benchVcgTopology(benchmark::State &state, const std::string &path) {
-  es::Mesh m;
-  copyMesh(m, loadMesh(path));
-  for (auto _ : state) {
-    const auto start = Clock::now();
-    vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m);
-    state.SetIterationTime(es::bench::secondsSince(start));
-    benchmark::DoNotOptimize(m.face.data());
-  }
-  setCommonCounters(state, m);
+  benchStep(state, path, [](es::Mesh &m) { vcg::tri::UpdateTopology<es::Mesh>::FaceFace(m); });
 }
 
 void benchCore(benchmark::State &state, const std::string &path, int threads,
@@ -252,38 +245,26 @@ int main(int argc, char **argv) {
   for (const std::string &path : meshes) {
     const int iterations = iterationsFor(path);
     const std::string faces = std::to_string(loadMesh(path).fn);
-    benchmark::RegisterBenchmark(("floor/" + faces).c_str(), benchFloor, path)
-        ->UseManualTime()
-        ->Unit(benchmark::kMillisecond)
-        ->Iterations(iterations);
-    benchmark::RegisterBenchmark(("vcg_ff/" + faces).c_str(), benchVcgTopology, path)
-        ->UseManualTime()
-        ->Unit(benchmark::kMillisecond)
-        ->Iterations(iterations);
-    benchmark::RegisterBenchmark(("fast_ff/" + faces).c_str(), benchFastTopology, path)
-        ->UseManualTime()
-        ->Unit(benchmark::kMillisecond)
-        ->Iterations(iterations);
+    // Each times its own runs (SetIterationTime: copying the mesh is left out).
+    const auto timed = [&](auto *b) {
+      b->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(iterations);
+    };
+    timed(benchmark::RegisterBenchmark(("floor/" + faces).c_str(), benchFloor, path));
+    timed(benchmark::RegisterBenchmark(("vcg_ff/" + faces).c_str(), benchVcgTopology, path));
+    timed(benchmark::RegisterBenchmark(("fast_ff/" + faces).c_str(), benchFastTopology, path));
     for (int t = 1; t <= hardwareThreads(); ++t)
-      benchmark::RegisterBenchmark(("core/" + faces + "/threads:" + std::to_string(t)).c_str(),
-                                   benchCore, path, t, es::SharpenOptions::paperMethod())
-          ->UseManualTime()
-          ->Unit(benchmark::kMillisecond)
-          ->Iterations(iterations);
+      timed(
+          benchmark::RegisterBenchmark(("core/" + faces + "/threads:" + std::to_string(t)).c_str(),
+                                       benchCore, path, t, es::SharpenOptions::paperMethod()));
     es::SharpenOptions extended;
     extended.method = es::Method::Extended;
     es::SharpenOptions autoMethod;  // the default
     autoMethod.method = es::Method::Auto;
     for (const auto &[name, opt] :
          {std::pair{"extended/", extended}, std::pair{"auto/", autoMethod}})
-      benchmark::RegisterBenchmark((name + faces).c_str(), benchCore, path, hardwareThreads(), opt)
-          ->UseManualTime()
-          ->Unit(benchmark::kMillisecond)
-          ->Iterations(iterations);
-    benchmark::RegisterBenchmark(("stages/" + faces).c_str(), benchStages, path)
-        ->UseManualTime()
-        ->Unit(benchmark::kMillisecond)
-        ->Iterations(iterations);
+      timed(benchmark::RegisterBenchmark((name + faces).c_str(), benchCore, path, hardwareThreads(),
+                                         opt));
+    timed(benchmark::RegisterBenchmark(("stages/" + faces).c_str(), benchStages, path));
   }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

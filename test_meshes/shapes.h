@@ -36,6 +36,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace edge_sharpener {
@@ -167,8 +168,12 @@ struct Prism {
   }
 };
 
+/// The prism over `outline` (counter-clockwise, simple; its caps are fans from `fanCenter`)
+/// from zMin to zMax.
 inline Shape prismShape(const std::string& name, const std::string& description,
-                        const Prism& prism) {
+                        std::vector<Point2d> outline, const Point2d& fanCenter, double zMin,
+                        double zMax) {
+  const Prism prism{std::move(outline), fanCenter, zMin, zMax};
   Shape shape;
   shape.name = name;
   shape.description = description;
@@ -218,24 +223,17 @@ inline Shape convexPolyhedronShape(const std::string& name, const std::string& d
 }
 
 inline Shape cube() {
-  Prism prism;
-  prism.outline = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
-  prism.fanCenter = Point2d(0, 0);
-  prism.zMin = -0.5;
-  prism.zMax = 0.5;
-  return prismShape("cube", "unit cube centred at the origin: 12 convex edges, 8 corners", prism);
+  return prismShape("cube", "unit cube centred at the origin: 12 convex edges, 8 corners",
+                    {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}}, Point2d(0, 0), -0.5,
+                    0.5);
 }
 
 inline Shape lblock() {
-  Prism prism;
-  prism.outline = {{-0.8, -0.8}, {0.8, -0.8}, {0.8, 0.0}, {0.0, 0.0}, {0.0, 0.8}, {-0.8, 0.8}};
-  prism.fanCenter = Point2d(-0.4, -0.4);  // sees the whole L
-  prism.zMin = -0.4;
-  prism.zMax = 0.4;
   return prismShape("lblock",
                     "L-shaped block 1.6 x 1.6 x 0.8: one concave edge along z at the inner "
                     "corner, convex edges, corners mixing both",
-                    prism);
+                    {{-0.8, -0.8}, {0.8, -0.8}, {0.8, 0.0}, {0.0, 0.0}, {0.0, 0.8}, {-0.8, 0.8}},
+                    Point2d(-0.4, -0.4) /* sees the whole L */, -0.4, 0.4);
 }
 
 inline Shape wedge() {
@@ -243,30 +241,22 @@ inline Shape wedge() {
   const double acuteAngle = 35.0 * M_PI / 180.0;
   const double height = length * std::tan(acuteAngle);
   const Point2d shift(length / 2, height / 2);
-  Prism prism;
-  prism.outline = {Point2d(0, 0) - shift, Point2d(length, 0) - shift, Point2d(0, height) - shift};
-  prism.fanCenter = Point2d(length / 3, height / 3) - shift;
-  prism.zMin = -0.4;
-  prism.zMax = 0.4;
   return prismShape("wedge",
                     "right triangular prism: dihedral angles 35 (acute edge), 55 and 90 "
                     "degrees along z, right-angled edges around the caps",
-                    prism);
+                    {Point2d(0, 0) - shift, Point2d(length, 0) - shift, Point2d(0, height) - shift},
+                    Point2d(length / 3, height / 3) - shift, -0.4, 0.4);
 }
 
 inline Shape crossPrism() {
   const double w = 0.3;  // half width of the arms
   const double e = 0.9;  // half span
-  Prism prism;
-  prism.outline = {{-w, -e}, {w, -e}, {w, -w}, {e, -w}, {e, w},   {w, w},
-                   {w, e},   {-w, e}, {-w, w}, {-e, w}, {-e, -w}, {-w, -w}};
-  prism.fanCenter = Point2d(0, 0);
-  prism.zMin = -0.3;
-  prism.zMax = 0.3;
   return prismShape("cross_prism",
                     "plus-shaped prism 1.8 x 1.8 x 0.6: four concave edges along z, "
                     "corners mixing concave and convex edges",
-                    prism);
+                    {{-w, -e}, {w, -e}, {w, -w}, {e, -w}, {e, w}, {w, w}, {w, e}, {-w, e}, {-w, w},
+                     {-e, w}, {-e, -w}, {-w, -w}},
+                    Point2d(0, 0), -0.3, 0.3);
 }
 
 inline Shape pyramid() {
@@ -441,44 +431,36 @@ inline std::vector<Point2d> finishedOutline(const std::vector<Point2d>& corners,
 /// Box 1.6 x 1.0 x 0.6 whose vertical edges are two bevels (0.03 and 0.07 wide) and two
 /// fillets (radii 0.03 and 0.07): one to three and a half cells at 1% of the diagonal.
 inline Shape bevelledBlock() {
-  Prism prism;
-  prism.outline = finishedOutline({{-0.8, -0.5}, {0.8, -0.5}, {0.8, 0.5}, {-0.8, 0.5}},
-                                  {{CornerFinish::Bevel, 0.03},
-                                   {CornerFinish::Fillet, 0.03},
-                                   {CornerFinish::Bevel, 0.07},
-                                   {CornerFinish::Fillet, 0.07}});
-  prism.fanCenter = Point2d(0, 0);
-  prism.zMin = -0.3;
-  prism.zMax = 0.3;
   return prismShape("bevelled_block",
                     "box 1.6 x 1.0 x 0.6, vertical edges finished by designed bevels 0.03 and "
                     "0.07 wide and fillets of radii 0.03 and 0.07; sharp edges round the caps",
-                    prism);
+                    finishedOutline({{-0.8, -0.5}, {0.8, -0.5}, {0.8, 0.5}, {-0.8, 0.5}},
+                                    {{CornerFinish::Bevel, 0.03},
+                                     {CornerFinish::Fillet, 0.03},
+                                     {CornerFinish::Bevel, 0.07},
+                                     {CornerFinish::Fillet, 0.07}}),
+                    Point2d(0, 0), -0.3, 0.3);
 }
 
 /// A hexagonal prism whose corners are finished by bevels and fillets of other sizes,
 /// one left sharp, and whose sides meet at other angles than bevelledBlock's.
 inline Shape finishedHexPrism() {
-  Prism prism;
-  prism.outline = finishedOutline({{-0.85, -0.35},
-                                   {-0.2, -0.7},
-                                   {0.7, -0.55},
-                                   {0.9, 0.1},
-                                   {0.35, 0.65},
-                                   {-0.6, 0.5}},
-                                  {{CornerFinish::Fillet, 0.05},
-                                   {CornerFinish::Bevel, 0.05},
-                                   {CornerFinish::Sharp, 0},
-                                   {CornerFinish::Fillet, 0.1},
-                                   {CornerFinish::Bevel, 0.1},
-                                   {CornerFinish::Fillet, 0.02}});
-  prism.fanCenter = Point2d(0, 0);
-  prism.zMin = -0.35;
-  prism.zMax = 0.35;
   return prismShape("finished_hexprism",
                     "hexagonal prism 1.75 x 1.35 x 0.7, vertical edges finished by designed "
                     "bevels (0.05, 0.1 wide) and fillets (radii 0.02, 0.05, 0.1), one sharp",
-                    prism);
+                    finishedOutline({{-0.85, -0.35},
+                                     {-0.2, -0.7},
+                                     {0.7, -0.55},
+                                     {0.9, 0.1},
+                                     {0.35, 0.65},
+                                     {-0.6, 0.5}},
+                                    {{CornerFinish::Fillet, 0.05},
+                                     {CornerFinish::Bevel, 0.05},
+                                     {CornerFinish::Sharp, 0},
+                                     {CornerFinish::Fillet, 0.1},
+                                     {CornerFinish::Bevel, 0.1},
+                                     {CornerFinish::Fillet, 0.02}}),
+                    Point2d(0, 0), -0.35, 0.35);
 }
 
 inline TriangleList uvSphere(double radius, int rings, int segments) {

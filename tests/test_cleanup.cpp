@@ -365,7 +365,27 @@ struct SplitTetrahedron {
     labels->placement[v] = es::Placement::Moved;
   }
   Vec3 at(std::size_t v) const { return es::positionOf(&m.vert[v]); }
+  /// removeDegenerateTriangles() after the moves made.
+  es::CleanupStats cleanUp() {
+    auto record = moves();
+    return es::removeDegenerateTriangles(m, record, kDegenerateRad);
+  }
+  /// Closed, 2-manifold and oriented, with no degenerate face left.
+  void expectSound() {
+    EXPECT_TRUE(closedOrientedManifold(m));
+    EXPECT_GE(smallestAngle(m), kDegenerateRad);
+  }
 };
+
+/// How the cleanup cured every degenerate face: by collapses, flips and
+/// vertices sent back.
+void expectCured(const es::CleanupStats &s, std::size_t collapses, std::size_t flips,
+                 std::size_t reverted) {
+  EXPECT_EQ(s.collapses, collapses);
+  EXPECT_EQ(s.flips, flips);
+  EXPECT_EQ(s.reverted, reverted);
+  EXPECT_EQ(s.remaining, 0u);
+}
 
 }  // namespace
 
@@ -373,18 +393,13 @@ TEST(DegenerateCleanup, CollapsesTheNeedleOfAVertexMovedNextToAnOriginal) {
   SplitTetrahedron t({0});
   const std::size_t e = t.insertedBetween(kA, kB);
   t.move(e, t.at(kA) + (t.at(kB) - t.at(kA)) * 0.001);
-  auto moves = t.moves();
-  const es::CleanupStats s = es::removeDegenerateTriangles(t.m, moves, kDegenerateRad);
+  const es::CleanupStats s = t.cleanUp();
   EXPECT_EQ(s.degenerateFound, 2u);  // a e c and e a d
-  EXPECT_EQ(s.collapses, 1u);
+  expectCured(s, 1, 0, 0);
   EXPECT_EQ(s.removedFaces, 2u);
-  EXPECT_EQ(s.flips, 0u);
-  EXPECT_EQ(s.reverted, 0u);
-  EXPECT_EQ(s.remaining, 0u);
   EXPECT_TRUE(t.m.vert[e].IsD());
   EXPECT_EQ(liveFaces(t.m), 4u);  // the tetrahedron again
-  EXPECT_TRUE(closedOrientedManifold(t.m));
-  EXPECT_GE(smallestAngle(t.m), kDegenerateRad);
+  t.expectSound();
 }
 
 TEST(DegenerateCleanup, FlipsACapInsideASplitFace) {
@@ -395,18 +410,13 @@ TEST(DegenerateCleanup, FlipsACapInsideASplitFace) {
   ASSERT_TRUE(hasEdge(t.m, kA, m1));
   const Vec3 middle = (t.at(kA) + t.at(m1)) / 2;
   t.move(m2, middle + Vec3(-0.004, 0.004, 0));
-  auto moves = t.moves();
-  const es::CleanupStats s = es::removeDegenerateTriangles(t.m, moves, kDegenerateRad);
+  const es::CleanupStats s = t.cleanUp();
   EXPECT_GE(s.degenerateFound, 1u);
-  EXPECT_EQ(s.flips, 1u);
-  EXPECT_EQ(s.collapses, 0u);
-  EXPECT_EQ(s.reverted, 0u);
-  EXPECT_EQ(s.remaining, 0u);
+  expectCured(s, 0, 1, 0);
   EXPECT_FALSE(hasEdge(t.m, kA, m1));
   EXPECT_TRUE(hasEdge(t.m, kB, m2));
   EXPECT_EQ(t.labels->placement[m2], es::Placement::Moved);  // kept where placement put it
-  EXPECT_TRUE(closedOrientedManifold(t.m));
-  EXPECT_GE(smallestAngle(t.m), kDegenerateRad);
+  t.expectSound();
 }
 
 TEST(DegenerateCleanup, RevertsAVertexWhenNeitherCollapseNorFlipApplies) {
@@ -416,18 +426,13 @@ TEST(DegenerateCleanup, RevertsAVertexWhenNeitherCollapseNorFlipApplies) {
   const std::size_t e = t.insertedBetween(kA, kB);
   const Vec3 rest = t.plan.inserted[e - t.plan.originalVertexCount].rest;
   t.move(e, (t.at(kA) + t.at(kC)) / 2 + Vec3(0.005, 0, 0));
-  auto moves = t.moves();
-  const es::CleanupStats s = es::removeDegenerateTriangles(t.m, moves, kDegenerateRad);
+  const es::CleanupStats s = t.cleanUp();
   EXPECT_GE(s.degenerateFound, 1u);
-  EXPECT_EQ(s.reverted, 1u);
-  EXPECT_EQ(s.collapses, 0u);
-  EXPECT_EQ(s.flips, 0u);
-  EXPECT_EQ(s.remaining, 0u);
+  expectCured(s, 0, 0, 1);
   EXPECT_EQ(t.labels->placement[e], es::Placement::DegenerateRevert);
   EXPECT_EQ(t.m.vert[e].cP(), vcg::Point3f::Construct(rest));
   EXPECT_EQ(liveFaces(t.m), 6u);
-  EXPECT_TRUE(closedOrientedManifold(t.m));
-  EXPECT_GE(smallestAngle(t.m), kDegenerateRad);
+  t.expectSound();
 }
 
 TEST(DegenerateCleanup, LeavesAMoveWhoseNeedleIsTheInputsOwnShortEdge) {
@@ -439,12 +444,9 @@ TEST(DegenerateCleanup, LeavesAMoveWhoseNeedleIsTheInputsOwnShortEdge) {
   const std::size_t e = t.insertedBetween(kA, kB);
   const Vec3 lifted = t.at(e) + Vec3(0, 0, 0.2);
   t.move(e, lifted);
-  auto moves = t.moves();
-  const es::CleanupStats s = es::removeDegenerateTriangles(t.m, moves, kDegenerateRad);
+  const es::CleanupStats s = t.cleanUp();
   EXPECT_GE(s.degenerateFound, 1u);
-  EXPECT_EQ(s.reverted, 0u);
-  EXPECT_EQ(s.collapses, 0u);
-  EXPECT_EQ(s.remaining, 0u);
+  expectCured(s, 0, 0, 0);
   EXPECT_GE(s.inherited, 1u);
   EXPECT_EQ(t.labels->placement[e], es::Placement::Moved);
   EXPECT_EQ(t.m.vert[e].cP(), vcg::Point3f::Construct(lifted));
@@ -461,17 +463,13 @@ TEST(DegenerateCleanup, CollapsesTwoVerticesMovedOntoTheSameOriginal) {
   const std::size_t m1 = t.insertedBetween(kB, kC), m2 = t.insertedBetween(kC, kA);
   t.move(m1, t.at(kC));
   t.move(m2, t.at(kC));
-  auto moves = t.moves();
-  const es::CleanupStats s = es::removeDegenerateTriangles(t.m, moves, kDegenerateRad);
+  const es::CleanupStats s = t.cleanUp();
   EXPECT_GE(s.degenerateFound, 2u);
-  EXPECT_EQ(s.collapses, 2u);
-  EXPECT_EQ(s.reverted, 0u);
-  EXPECT_EQ(s.remaining, 0u);
+  expectCured(s, 2, 0, 0);
   EXPECT_TRUE(t.m.vert[m1].IsD());
   EXPECT_TRUE(t.m.vert[m2].IsD());
   EXPECT_EQ(liveFaces(t.m), 4u);
-  EXPECT_TRUE(closedOrientedManifold(t.m));
-  EXPECT_GE(smallestAngle(t.m), kDegenerateRad);
+  t.expectSound();
 }
 
 namespace {

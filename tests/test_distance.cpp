@@ -54,6 +54,15 @@ DistanceOptions fastOptions() {
   return options;
 }
 
+/// `name`'s exact shape in `reference` and, in `mc`, sampled by marching cubes at 2% of its
+/// diagonal.
+const shapes::Shape& sampledAndExact(const char* name, Mesh& mc, Mesh& reference) {
+  const shapes::Shape& shape = shapes::shapeByName(name);
+  shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, 0.02), mc);
+  shapes::buildReference(shape, reference);
+  return shape;
+}
+
 TEST(MeshesDistance, MeshToItselfIsZero) {
   Mesh mc, copy;
   const shapes::Shape& lblock = shapes::shapeByName("lblock");
@@ -125,10 +134,8 @@ TEST(MeshesDistance, MeanAndRmsOfALinearlyGrowingDistance) {
 }
 
 TEST(MeshesDistance, SymmetricValuesCombineBothSides) {
-  const shapes::Shape& wedge = shapes::shapeByName("wedge");
   Mesh mc, reference;
-  shapes::marchingCubes(wedge, shapes::cellSizeForDiagonalFraction(wedge, 0.02), mc);
-  shapes::buildReference(wedge, reference);
+  const shapes::Shape& wedge = sampledAndExact("wedge", mc, reference);
   const DistanceReport report = measureDistance(mc, reference, fastOptions());
   const auto& f = report.forward;
   const auto& b = report.backward;
@@ -157,10 +164,8 @@ TEST(MeshesDistance, SymmetricValuesCombineBothSides) {
 }
 
 TEST(MeshesDistance, DeterministicForASeedAndSampleCountsFollowTheOptions) {
-  const shapes::Shape& pyramid = shapes::shapeByName("pyramid");
   Mesh mc, reference;
-  shapes::marchingCubes(pyramid, shapes::cellSizeForDiagonalFraction(pyramid, 0.02), mc);
-  shapes::buildReference(pyramid, reference);
+  sampledAndExact("pyramid", mc, reference);
   const DistanceReport first = measureDistance(mc, reference, fastOptions());
   const DistanceReport again = measureDistance(mc, reference, fastOptions());
   EXPECT_EQ(first.forward.samples, again.forward.samples);
@@ -184,10 +189,8 @@ TEST(MeshesDistance, DeterministicForASeedAndSampleCountsFollowTheOptions) {
 }
 
 TEST(MeshesDistance, LeavesPositionsUntouched) {
-  const shapes::Shape& cylinder = shapes::shapeByName("cylinder_block");
   Mesh mc, reference;
-  shapes::marchingCubes(cylinder, shapes::cellSizeForDiagonalFraction(cylinder, 0.02), mc);
-  shapes::buildReference(cylinder, reference);
+  sampledAndExact("cylinder_block", mc, reference);
   std::vector<Mesh::CoordType> before;
   for (const auto& v : mc.vert) before.push_back(v.cP());
   for (const auto& v : reference.vert) before.push_back(v.cP());

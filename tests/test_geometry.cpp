@@ -21,6 +21,18 @@ double planeOffset(const Plane &p, const Vec3 &x) {
   return p.normal * (x - p.point);
 }
 
+/// Random points in [-1, 1]^3 and planes through them, from a fixed seed.
+class RandomPlanes {
+ public:
+  explicit RandomPlanes(unsigned seed) : rng_(seed) {}
+  Vec3 point() { return Vec3(u_(rng_), u_(rng_), u_(rng_)); }
+  Plane plane() { return Plane{point(), unit(point())}; }
+
+ private:
+  std::mt19937 rng_;
+  std::uniform_real_distribution<double> u_{-1, 1};
+};
+
 }  // namespace
 
 TEST(PlanePairLine, PointLiesOnBothPlanesAndIsClosestToTarget) {
@@ -33,12 +45,11 @@ TEST(PlanePairLine, PointLiesOnBothPlanesAndIsClosestToTarget) {
 }
 
 TEST(PlanePairLine, RandomPlanesGiveExactClosestPoint) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1, 1);
+  RandomPlanes sample(7);
   for (int trial = 0; trial < 200; ++trial) {
-    const Plane p{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
-    const Plane q{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
-    const Vec3 target(u(rng), u(rng), u(rng));
+    const Plane p = sample.plane();
+    const Plane q = sample.plane();
+    const Vec3 target = sample.point();
     const auto x = es::closestPointOnPlanePairLine(p, q, target, 1 * kDeg);
     if (!x) {
       EXPECT_LE((p.normal ^ q.normal).Norm(), std::sin(1 * kDeg) + 1e-15) << trial;
@@ -73,13 +84,12 @@ TEST(ThreePlanes, CubeCornerIsRecovered) {
 }
 
 TEST(ThreePlanes, RandomPlanesMeetAtTheirCommonPoint) {
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(-1, 1);
+  RandomPlanes sample(11);
   int solved = 0;
   for (int trial = 0; trial < 200; ++trial) {
-    const Plane p{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
-    const Plane q{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
-    const Plane r{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
+    const Plane p = sample.plane();
+    const Plane q = sample.plane();
+    const Plane r = sample.plane();
     const auto w = es::intersectThreePlanes(p, q, r, 1 * kDeg);
     const double triple = std::abs(p.normal * (q.normal ^ r.normal));
     EXPECT_EQ(w.has_value(), triple > std::sin(1 * kDeg)) << trial;
@@ -164,11 +174,10 @@ TEST(Convexity, StepBetweenConcaveAndConvexIsMixed) {
 }
 
 TEST(Convexity, SymmetricInSwappingTheEndpoints) {
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> u(-1, 1);
+  RandomPlanes sample(3);
   for (int trial = 0; trial < 100; ++trial) {
-    const Plane p{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
-    const Plane q{Vec3(u(rng), u(rng), u(rng)), unit(Vec3(u(rng), u(rng), u(rng)))};
+    const Plane p = sample.plane();
+    const Plane q = sample.plane();
     EXPECT_EQ(es::classifyChamferEdge(p, q, 1e-3), es::classifyChamferEdge(q, p, 1e-3));
   }
 }

@@ -96,6 +96,24 @@ double distance(const es::Mesh &m, std::size_t u, std::size_t w) {
   return (es::positionOf(&m.vert[u]) - es::positionOf(&m.vert[w])).Norm();
 }
 
+/// subdivide()'s counts: faces split in 2, 3 and 6, vertices inserted, faces added.
+void expectCounts(const es::SubdivisionStats &s, std::size_t in2, std::size_t in3, std::size_t in6,
+                  std::size_t inserted, std::size_t added) {
+  EXPECT_EQ(s.facesSplitIn2, in2);
+  EXPECT_EQ(s.facesSplitIn3, in3);
+  EXPECT_EQ(s.facesSplitIn6, in6);
+  EXPECT_EQ(s.insertedVertices, inserted);
+  EXPECT_EQ(s.addedFaces, added);
+}
+
+/// The children tile their parents with their orientation, and the mesh is
+/// closed, 2-manifold and oriented, with the adjacency a full rebuild gives.
+void expectCleanSplit(const Parents &parents, es::Mesh &m) {
+  EXPECT_TRUE(parents.tiledWithParentOrientation(m));
+  EXPECT_TRUE(closedOrientedManifold(m));
+  EXPECT_TRUE(es::hand_built::adjacencyMatchesRebuild(m));
+}
+
 }  // namespace
 
 TEST(Subdivision, OneChamferEdgeSplitsBothItsFacesInTwo) {
@@ -126,12 +144,7 @@ TEST(Subdivision, OneChamferEdgeSplitsBothItsFacesInTwo) {
   }
 
   const Parents parents(m);
-  const es::SubdivisionStats s = es::subdivide(m, plan, labels);
-  EXPECT_EQ(s.facesSplitIn2, 2u);
-  EXPECT_EQ(s.facesSplitIn3, 0u);
-  EXPECT_EQ(s.facesSplitIn6, 0u);
-  EXPECT_EQ(s.insertedVertices, 1u);
-  EXPECT_EQ(s.addedFaces, 2u);
+  expectCounts(es::subdivide(m, plan, labels), 2, 0, 0, 1, 2);
   ASSERT_EQ(m.vert.size(), 5u);
   ASSERT_EQ(m.face.size(), 6u);
   const std::size_t e = 4;
@@ -141,9 +154,7 @@ TEST(Subdivision, OneChamferEdgeSplitsBothItsFacesInTwo) {
   EXPECT_TRUE(hasEdge(m, e, kC));  // ...and joined to both opposite vertices
   EXPECT_TRUE(hasEdge(m, e, kD));
   EXPECT_EQ(es::hand_built::valence(m, e), 4u);
-  EXPECT_TRUE(parents.tiledWithParentOrientation(m));
-  EXPECT_TRUE(closedOrientedManifold(m));
-  EXPECT_TRUE(es::hand_built::adjacencyMatchesRebuild(m));
+  expectCleanSplit(parents, m);
   // Children keep their parent's label.
   for (const auto &f : m.face)
     EXPECT_EQ(labels.face[&f], f.cQ() < 2 ? es::FaceLabel::Chamfer : es::FaceLabel::Gray);
@@ -164,11 +175,7 @@ TEST(Subdivision, TwoChamferEdgesSplitInThreeAlongTheShorterDiagonal) {
     ASSERT_EQ(plan.faces.size(), 3u);  // a b c in 3, c b d and a c d in 2
 
     const Parents parents(m);
-    const es::SubdivisionStats s = es::subdivide(m, plan, labels);
-    EXPECT_EQ(s.facesSplitIn3, 1u);
-    EXPECT_EQ(s.facesSplitIn2, 2u);
-    EXPECT_EQ(s.facesSplitIn6, 0u);
-    EXPECT_EQ(s.addedFaces, 4u);
+    expectCounts(es::subdivide(m, plan, labels), 2, 1, 0, 2, 4);
     ASSERT_EQ(m.face.size(), 8u);
 
     const std::size_t m1 = insertedBetween(plan, kB, kC), m2 = insertedBetween(plan, kC, kA);
@@ -178,9 +185,7 @@ TEST(Subdivision, TwoChamferEdgesSplitInThreeAlongTheShorterDiagonal) {
     EXPECT_EQ(viaA, cx < 0.5);
     EXPECT_EQ(hasEdge(m, kA, m1), viaA);
     EXPECT_EQ(hasEdge(m, kB, m2), !viaA);
-    EXPECT_TRUE(parents.tiledWithParentOrientation(m));
-    EXPECT_TRUE(closedOrientedManifold(m));
-    EXPECT_TRUE(es::hand_built::adjacencyMatchesRebuild(m));
+    expectCleanSplit(parents, m);
   }
 }
 
@@ -204,12 +209,7 @@ TEST(Subdivision, CornerSplitsIntoAFanOfSixAroundItsCentre) {
   EXPECT_LT((centre.rest - centroid).Norm(), 1e-12);
 
   const Parents parents(m);
-  const es::SubdivisionStats s = es::subdivide(m, plan, labels);
-  EXPECT_EQ(s.facesSplitIn6, 1u);
-  EXPECT_EQ(s.facesSplitIn2, 3u);
-  EXPECT_EQ(s.facesSplitIn3, 0u);
-  EXPECT_EQ(s.insertedVertices, 4u);
-  EXPECT_EQ(s.addedFaces, 8u);
+  expectCounts(es::subdivide(m, plan, labels), 3, 0, 1, 4, 8);
   ASSERT_EQ(m.face.size(), 12u);
   const std::size_t c = plan.originalVertexCount + std::size_t(corner.centerVertex);
   // The six children of the corner are exactly the faces around the centre.
@@ -230,9 +230,7 @@ TEST(Subdivision, CornerSplitsIntoAFanOfSixAroundItsCentre) {
     EXPECT_EQ(es::hand_built::valence(m, e), 4u);  // u, w, the centre, the far vertex d
     EXPECT_TRUE(hasEdge(m, e, kD));
   }
-  EXPECT_TRUE(parents.tiledWithParentOrientation(m));
-  EXPECT_TRUE(closedOrientedManifold(m));
-  EXPECT_TRUE(es::hand_built::adjacencyMatchesRebuild(m));
+  expectCleanSplit(parents, m);
 }
 
 // A coloured mesh (a scan with vertex colours, in MeshLab): each inserted
@@ -305,9 +303,7 @@ TEST(Subdivision, SplitOfAChamferedCubeKeepsItClosedAndOriented) {
   EXPECT_EQ(s.addedFaces, s.facesSplitIn2 + 2 * s.facesSplitIn3 + 5 * s.facesSplitIn6);
   EXPECT_GT(s.facesSplitIn3, 0u);
   EXPECT_GT(s.facesSplitIn6, 0u);
-  EXPECT_TRUE(parents.tiledWithParentOrientation(m));
-  EXPECT_TRUE(closedOrientedManifold(m));
-  EXPECT_TRUE(es::hand_built::adjacencyMatchesRebuild(m));
+  expectCleanSplit(parents, m);
   EXPECT_NEAR(es::test_meshes::signedVolume(m), volume, 1e-6 * volume);
 }
 

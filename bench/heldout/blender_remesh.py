@@ -258,13 +258,11 @@ def table(sampler, refs, half, work, args):
 
 
 def main():
-    args = heldout.parse_args(__doc__)
-    heldout.require_open3d("blender_remesh")
+    args = heldout.parse_args(__doc__, "blender_remesh.py")
     if not os.path.exists(BLENDER):
         sys.exit(f"blender_remesh: {BLENDER} (Debian blender) is not installed")
-    heldout.run_samplers(args, SAMPLERS, table, os.path.join(args.build, "heldout-blender"),
-                         "Held-out check: Blender's remeshers", "blender_remesh.py", 4, MADE,
-                         NOTES)
+    heldout.run_samplers(args, SAMPLERS, table, "heldout-blender",
+                         "Held-out check: Blender's remeshers", 4, MADE, NOTES)
 
 
 if __name__ == "__main__":

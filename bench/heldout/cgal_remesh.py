@@ -143,11 +143,10 @@ def table(sampler, refs, half, work, args):
 
 
 def main():
-    args = heldout.parse_args(__doc__)
-    heldout.require_open3d("cgal_remesh")
-    heldout.run_samplers(args, SAMPLERS, table, os.path.join(args.build, "heldout-cgal"),
-                         "Held-out check: CGAL's isotropic remeshing and alpha wrapping",
-                         "cgal_remesh.py", 4, MADE, NOTES)
+    args = heldout.parse_args(__doc__, "cgal_remesh.py")
+    heldout.run_samplers(args, SAMPLERS, table, "heldout-cgal",
+                         "Held-out check: CGAL's isotropic remeshing and alpha wrapping", 4,
+                         MADE, NOTES)
 
 
 if __name__ == "__main__":

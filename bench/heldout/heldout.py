@@ -19,8 +19,10 @@ import run as quality_run  # noqa: E402
 from evidence_study import references  # noqa: E402
 
 
-def parse_args(doc):
-    """--build, --shared, --method, --out and further edge-sharpener options after --."""
+def parse_args(doc, script):
+    """--build, --shared, --method, --out and further edge-sharpener options after --, of the
+    check bench/heldout/`script` (args.script). Every check reads meshes with Open3D: it exits
+    when Open3D is not installed."""
     ap = argparse.ArgumentParser(description=doc,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", default=os.path.join(SOURCE, "build"))
@@ -31,6 +33,8 @@ def parse_args(doc):
     args = ap.parse_args()
     # The samplers run in their own work directories: a relative --build would not be found.
     args.build = os.path.abspath(args.build)
+    args.script = script
+    require_open3d(os.path.splitext(script)[0])
     return args
 
 
@@ -129,23 +133,25 @@ class Table:
         return "\n".join(lines)
 
 
-def write_markdown(args, heading, script, minutes, body):
+def write_markdown(args, heading, minutes, body):
     """The --out file: a heading, how it was written, the body."""
     with open(args.out, "w") as f:
         f.write(f"# {heading}\n\n"
-                f"Written by `/usr/bin/python3 bench/heldout/{script} --out "
+                f"Written by `/usr/bin/python3 bench/heldout/{args.script} --out "
                 f"{os.path.relpath(args.out, SOURCE)}` (about {minutes} minutes). No threshold "
                 "was fitted to it. Distances in % of the reference's diagonal (mesh-distance "
                 "--sampling meshlab); **worse** = max up by more than 2% or RMS by more than "
                 "1%.\n\n" + body)
 
 
-def run_samplers(args, samplers, table, work, heading, script, minutes, made, notes):
-    """Each sampler's table, table(sampler, refs, half, work, args) with its meshes in `work`,
-    printed and, with --out, written between `made` (how the inputs were made) and `notes`."""
+def run_samplers(args, samplers, table, work, heading, minutes, made, notes):
+    """Each sampler's table, table(sampler, refs, half, work, args) with its meshes in `work`
+    (a directory of --build), printed and, with --out, written between `made` (how the inputs
+    were made) and `notes`."""
+    work = os.path.join(args.build, work)
     os.makedirs(work, exist_ok=True)
     refs, half = held_out_references(args), halves()
     text = "\n\n".join(table(s, refs, half, work, args) for s in samplers)
     print(text)
     if args.out:
-        write_markdown(args, heading, script, minutes, made + "\n\n" + text + "\n\n" + notes)
+        write_markdown(args, heading, minutes, made + "\n\n" + text + "\n\n" + notes)

@@ -93,14 +93,13 @@ def table(sampler, refs, half, work, args):
 
 
 def main():
-    args = heldout.parse_args(__doc__)
-    heldout.require_open3d("meshlab_decimate")
+    args = heldout.parse_args(__doc__, "meshlab_decimate.py")
     server = os.path.join(args.build, "meshlab-prefix", "bin", "meshlabserver")
     if not meshlab.Server(server, "/tmp").available():
         sys.exit("meshlab_decimate: meshlabserver (BUILD/meshlab-prefix) or xvfb-run not found")
-    heldout.run_samplers(args, SAMPLERS, table, os.path.join(args.build, "heldout-decimate"),
-                         "Held-out check: MeshLab's decimation of its marching cubes",
-                         "meshlab_decimate.py", 2, MADE, NOTES)
+    heldout.run_samplers(args, SAMPLERS, table, "heldout-decimate",
+                         "Held-out check: MeshLab's decimation of its marching cubes", 2, MADE,
+                         NOTES)
 
 
 if __name__ == "__main__":

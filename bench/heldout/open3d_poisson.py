@@ -123,8 +123,7 @@ def reconstruct(reference, out):
 
 
 def main():
-    args = heldout.parse_args(__doc__)
-    heldout.require_open3d("open3d_poisson")
+    args = heldout.parse_args(__doc__, "open3d_poisson.py")
     work = os.path.join(args.build, "heldout-open3d-poisson")
     os.makedirs(work, exist_ok=True)
     half = heldout.halves()
@@ -138,8 +137,8 @@ def main():
     text = table.text()
     print(text)
     if args.out:
-        heldout.write_markdown(args, "Held-out check: a tool outside the benchmark",
-                               "open3d_poisson.py", 3, text + "\n\n" + NOTES)
+        heldout.write_markdown(args, "Held-out check: a tool outside the benchmark", 3,
+                               text + "\n\n" + NOTES)
 
 
 if __name__ == "__main__":

@@ -109,11 +109,9 @@ def table(sampler, refs, half, work, args):
 
 
 def main():
-    args = heldout.parse_args(__doc__)
-    heldout.require_open3d("scan_settings")
-    heldout.run_samplers(args, SAMPLERS, table, os.path.join(args.build, "heldout-scans"),
-                         "Held-out check: depth scans at other settings", "scan_settings.py", 5,
-                         MADE, NOTES)
+    args = heldout.parse_args(__doc__, "scan_settings.py")
+    heldout.run_samplers(args, SAMPLERS, table, "heldout-scans",
+                         "Held-out check: depth scans at other settings", 5, MADE, NOTES)
 
 
 if __name__ == "__main__":

@@ -226,13 +226,11 @@ def table(sampler, refs, half, work, args):
 
 
 def main():
-    args = heldout.parse_args(__doc__)
-    heldout.require_open3d("skimage_mc")
+    args = heldout.parse_args(__doc__, "skimage_mc.py")
     if importlib.util.find_spec("skimage") is None:
         sys.exit("skimage_mc: scikit-image (Debian python3-skimage) is not installed")
-    heldout.run_samplers(args, SAMPLERS, table, os.path.join(args.build, "heldout-skimage"),
-                         "Held-out check: scikit-image's marching cubes", "skimage_mc.py", 3, MADE,
-                         NOTES)
+    heldout.run_samplers(args, SAMPLERS, table, "heldout-skimage",
+                         "Held-out check: scikit-image's marching cubes", 3, MADE, NOTES)
 
 
 if __name__ == "__main__":

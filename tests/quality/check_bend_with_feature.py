@@ -16,10 +16,6 @@ import checks  # first: puts bench/quality on sys.path
 MIN_FACTORS = {"cylinder_block": (1.8, 2.4), "lblock_tilted": (1.7, 2.25)}
 
 
-def main():
+if __name__ == "__main__":
     checks.check_min_factors(MIN_FACTORS, "2%",
                              "moved with their feature across a bending flank: none made worse")
-
-
-if __name__ == "__main__":
-    main()

@@ -31,23 +31,18 @@ import families
 
 MARGIN = 0.9
 MULTIPLIER = 2.0
-# (input, resolution) -> method -> (max factor, RMS factor, worse count of 3), as measured
+METHODS = ("auto", "paper", "extended", "unsharp-mask")
+# (input, resolution) -> per method of METHODS: (max factor, RMS factor, worse count of 3), as
+# measured
 MEASURED = {
-    ("vdb", "1%"): {"auto": (1.610, 3.377, 0), "paper": (1.000, 1.030, 0),
-        "extended": (1.647, 3.019, 0),
-        "unsharp-mask": (1.177, 1.397, 0)},
-    ("ier", "1%"): {"auto": (4.512, 52.611, 0), "paper": (1.702, 7.853, 0),
-        "extended": (3.233, 30.852, 0),
-        "unsharp-mask": (1.240, 1.332, 0)},
-    ("poisson", "depth 7"): {"auto": (1.277, 1.775, 0), "paper": (1.014, 1.064, 0),
-        "extended": (1.196, 1.380, 0),
-        "unsharp-mask": (1.117, 1.171, 0)},
-    ("scan", "noise 0"): {"auto": (1.428, 1.687, 0), "paper": (1.000, 0.992, 2),
-        "extended": (0.881, 0.946, 3),
-        "unsharp-mask": (0.890, 0.880, 3)},
-    ("scan", "noise 0.2 voxel"): {"auto": (1.139, 1.674, 0), "paper": (1.002, 0.989, 2),
-        "extended": (0.965, 0.958, 3),
-        "unsharp-mask": (0.891, 0.879, 3)},
+    ("vdb", "1%"): ((1.610, 3.377, 0), (1.000, 1.030, 0), (1.647, 3.019, 0), (1.177, 1.397, 0)),
+    ("ier", "1%"): ((4.512, 52.611, 0), (1.702, 7.853, 0), (3.233, 30.852, 0), (1.240, 1.332, 0)),
+    ("poisson", "depth 7"): ((1.277, 1.775, 0), (1.014, 1.064, 0), (1.196, 1.380, 0),
+                             (1.117, 1.171, 0)),
+    ("scan", "noise 0"): ((1.428, 1.687, 0), (1.000, 0.992, 2), (0.881, 0.946, 3),
+                          (0.890, 0.880, 3)),
+    ("scan", "noise 0.2 voxel"): ((1.139, 1.674, 0), (1.002, 0.989, 2), (0.965, 0.958, 3),
+                                  (0.891, 0.879, 3)),
 }
 SHAPES = 3
 
@@ -70,12 +65,12 @@ def main():
                 failures.append(f"{name} {r['method']} m{r['multiplier']:g}: {r['status']}: "
                                 f"{r.get('why')}")
         groups.setdefault((c["input"], c["resolution"]), []).append(c)
-    for key, methods in MEASURED.items():
+    for key, measured_by_method in MEASURED.items():
         cases = groups.get(key, [])
         if len(cases) != SHAPES:
             failures.append(f"{key}: {len(cases)} inputs measured, expected {SHAPES}")
             continue
-        for method, (mmax, mrms, mworse) in methods.items():
+        for method, (mmax, mrms, mworse) in zip(METHODS, measured_by_method):
             gmax, grms, worse, measured, failed = families.family_stats(cases, method, MULTIPLIER)
             print(f"  {key[0]} {key[1]:16s} {method:22s} max x{gmax:.3f} (floor "
                   f"{MARGIN * mmax:.3f})  RMS x{grms:.3f} (floor {MARGIN * mrms:.3f})  worse "

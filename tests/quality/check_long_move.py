@@ -16,13 +16,7 @@ MULTIPLIER = 2.0
 EXPECTED = {("octa-flower17k", "depth 7")}
 
 
-def main():
-    failures = []
-    outcomes = checks.default_method_outcomes(checks.load_results()["cases"], failures,
-                                              MULTIPLIER, width=24)
-    checks.require_measured(outcomes, ("model", "resolution"), EXPECTED, failures)
-    checks.finish(failures, "long moves from samples off their planes: none made worse")
-
-
 if __name__ == "__main__":
-    main()
+    checks.check_default_method(("model", "resolution"), EXPECTED,
+                                "long moves from samples off their planes: none made worse",
+                                multiplier=MULTIPLIER, width=24)

@@ -17,10 +17,6 @@ import checks  # first: puts bench/quality on sys.path
 MIN_FACTORS = {"bevelled_block": (1.07, 1.6), "lblock_tilted": (2.1, 10.0)}
 
 
-def main():
+if __name__ == "__main__":
     checks.check_min_factors(MIN_FACTORS, "1%",
                              "features mostly on their planes: sharpened, none made worse")
-
-
-if __name__ == "__main__":
-    main()

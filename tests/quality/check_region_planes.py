@@ -19,10 +19,6 @@ import checks  # first: puts bench/quality on sys.path
 MIN_FACTORS = {"cylinder_block": (1.18, 1.45), "lblock_tilted": (1.33, 2.42)}
 
 
-def main():
+if __name__ == "__main__":
     checks.check_min_factors(MIN_FACTORS, "depth 7",
                              "placed on their regions' own planes: none made worse")
-
-
-if __name__ == "__main__":
-    main()

@@ -28,10 +28,6 @@ import checks  # first: puts bench/quality on sys.path
 MIN_FACTORS = {"cross_prism": (0.98, 1.55), "lblock_tilted": (1.4, 1.45)}
 
 
-def main():
+if __name__ == "__main__":
     checks.check_min_factors(MIN_FACTORS, "noise 0",
                              "a rough input's planar faces flattened: none made worse")
-
-
-if __name__ == "__main__":
-    main()

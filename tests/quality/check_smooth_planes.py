@@ -19,17 +19,18 @@ MULTIPLIER = 2.0
 MIN_POISSON_RMS_FACTOR = 1.1
 
 
+def factors(case):
+    poisson = (case["model"], case["input"]) == ("cross_prism", "poisson")
+    return {"rms": MIN_POISSON_RMS_FACTOR} if poisson else {}
+
+
 def main():
-    failures = []
-    outcomes = checks.default_method_outcomes(checks.load_results()["cases"], failures, MULTIPLIER)
-    for c, before, after in outcomes:
-        if (c["model"], c["input"]) == ("cross_prism", "poisson"):
-            checks.require_factor(c, before, after, "rms", MIN_POISSON_RMS_FACTOR, failures)
     expected = {("cross_prism", "poisson")}
     if len(sys.argv) > 2:  # rocker-arm's results too
         expected.add(("rocker-arm", "vdb"))
-    checks.require_measured(outcomes, ("model", "input"), expected, failures)
-    checks.finish(failures, "smooth planes: Poisson's cross_prism sharpened, nothing made worse")
+    checks.check_default_method(
+        ("model", "input"), expected,
+        "smooth planes: Poisson's cross_prism sharpened, nothing made worse", factors, MULTIPLIER)
 
 
 if __name__ == "__main__":

@@ -18,16 +18,12 @@ MIN_CSG_RMS_FACTOR = 1.5
 EXPECTED = {("vdb", "1%"), ("csg", "1%")}
 
 
-def main():
-    failures = []
-    outcomes = checks.default_method_outcomes(checks.load_results()["cases"], failures,
-                                              MULTIPLIER, width=16)
-    for c, before, after in outcomes:
-        if c["input"] == "csg":
-            checks.require_factor(c, before, after, "rms", MIN_CSG_RMS_FACTOR, failures)
-    checks.require_measured(outcomes, ("input", "resolution"), EXPECTED, failures)
-    checks.finish(failures, "thin wall: the default method made neither input worse")
+def factors(case):
+    """At CSG 1%, where the inner facets' edges are restored, the RMS error falls."""
+    return {"rms": MIN_CSG_RMS_FACTOR} if case["input"] == "csg" else {}
 
 
 if __name__ == "__main__":
-    main()
+    checks.check_default_method(("input", "resolution"), EXPECTED,
+                                "thin wall: the default method made neither input worse", factors,
+                                MULTIPLIER, width=16)

@@ -71,52 +71,55 @@ def require_factor(case, before, after, quantity, bound, failures):
                         f"x{before[quantity] / after[quantity]:.2f} < x{bound}")
 
 
-def check_min_factors(min_factors, resolution, passed, multiplier=2.0, width=24):
-    """The whole check of a results JSON with one input per model of `min_factors`, all at
-    `resolution`: each made, sharpened by the default method and measured, none worse, and its
-    max and RMS reduction factors at least min_factors[model] = (max, RMS). Exits like
-    finish()."""
+def check_default_method(fields, expected, passed, factors=None, multiplier=2.0, width=28,
+                         each=None):
+    """The whole check of a results JSON: each case made, sharpened by the default method at
+    `multiplier` and measured, none worse (default_method_outcomes); the cases, keyed by the
+    tuple of their `fields`, exactly `expected` (require_measured); each case's reduction
+    factors at least the bounds `factors(case)` gives ({"max" or "rms": bound}, none when
+    `factors` is None); `each(case, failures)`, when given, checks each case further. Exits
+    like finish()."""
     failures = []
     outcomes = default_method_outcomes(load_results()["cases"], failures, multiplier, width)
     for c, before, after in outcomes:
-        min_max, min_rms = min_factors[c["model"]]
-        require_factor(c, before, after, "max", min_max, failures)
-        require_factor(c, before, after, "rms", min_rms, failures)
-    require_measured(outcomes, ("model", "resolution"),
-                     {(model, resolution) for model in min_factors}, failures)
+        for quantity, bound in (factors(c) if factors else {}).items():
+            require_factor(c, before, after, quantity, bound, failures)
+        if each:
+            each(c, failures)
+    require_measured(outcomes, fields, expected, failures)
     finish(failures, passed)
+
+
+def check_min_factors(min_factors, resolution, passed, multiplier=2.0, width=24):
+    """check_default_method on a results JSON with one input per model of `min_factors`, all at
+    `resolution`: its max and RMS reduction factors at least min_factors[model] = (max, RMS)."""
+    check_default_method(("model", "resolution"), {(model, resolution) for model in min_factors},
+                         passed, lambda c: dict(zip(("max", "rms"), min_factors[c["model"]])),
+                         multiplier, width)
 
 
 def check_rms_factors_by_resolution(input_key, min_rms_factors, passed, multiplier=2.0,
                                     each=None):
-    """The whole check of a results JSON with one model's inputs `input_key` at the resolutions
-    of `min_rms_factors`: each made, sharpened by the default method and measured, none worse,
-    and its RMS reduction factor at least min_rms_factors[resolution]; `each(case, run,
-    failures)`, when given, checks each case's default run further. Exits like finish()."""
-    failures = []
-    outcomes = default_method_outcomes(load_results()["cases"], failures, multiplier, width=16)
-    for c, before, after in outcomes:
-        require_factor(c, before, after, "rms", min_rms_factors[c["resolution"]], failures)
-        if each:
-            each(c, next(r for r in c["runs"] if r["method"] == "auto"
-                          and r.get("multiplier") == multiplier), failures)
-    require_measured(outcomes, ("input", "resolution"),
-                     {(input_key, resolution) for resolution in min_rms_factors}, failures)
-    finish(failures, passed)
+    """check_default_method on a results JSON with one model's inputs `input_key` at the
+    resolutions of `min_rms_factors`: its RMS reduction factor at least
+    min_rms_factors[resolution]; `each(case, run, failures)`, when given, checks each case's
+    default run further."""
+    def each_run(c, failures):
+        each(c, next(r for r in c["runs"] if r["method"] == "auto"
+                      and r.get("multiplier") == multiplier), failures)
+
+    check_default_method(("input", "resolution"),
+                         {(input_key, resolution) for resolution in min_rms_factors}, passed,
+                         lambda c: {"rms": min_rms_factors[c["resolution"]]}, multiplier, 16,
+                         each_run if each else None)
 
 
 def check_max_factors_by_model(min_max_factors, passed, multiplier=2.0):
-    """The whole check of a results JSON whose inputs are the (model, resolution) keys of
-    `min_max_factors`: each made, sharpened by the default method and measured, none worse,
-    and its max reduction factor at least min_max_factors[(model, resolution)]. Exits like
-    finish()."""
-    failures = []
-    outcomes = default_method_outcomes(load_results()["cases"], failures, multiplier, width=28)
-    for c, before, after in outcomes:
-        require_factor(c, before, after, "max", min_max_factors[(c["model"], c["resolution"])],
-                       failures)
-    require_measured(outcomes, ("model", "resolution"), min_max_factors, failures)
-    finish(failures, passed)
+    """check_default_method on a results JSON whose inputs are the (model, resolution) keys of
+    `min_max_factors`: its max reduction factor at least min_max_factors[(model, resolution)]."""
+    check_default_method(("model", "resolution"), min_max_factors, passed,
+                         lambda c: {"max": min_max_factors[(c["model"], c["resolution"])]},
+                         multiplier)
 
 
 def require_measured(outcomes, fields, expected, failures):

@@ -96,6 +96,14 @@ void copy(Mesh &dst, Mesh &src) {
   vcg::tri::UpdateTopology<Mesh>::FaceFace(dst);
 }
 
+/// Shape `name` sampled into `out` by the project's marching cubes, cells
+/// `fraction` of its diagonal.
+const shapes::Shape &marchingCubesOf(const std::string &name, double fraction, Mesh &out) {
+  const shapes::Shape &shape = shapes::shapeByName(name);
+  shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, fraction), out);
+  return shape;
+}
+
 /// Max distance between corresponding vertices of two meshes with the same
 /// connectivity; a negative value when the connectivity differs.
 /// Vertices the self-intersection guard moved back are skipped when
@@ -122,9 +130,8 @@ class SharpenInvariants : public ::testing::TestWithParam<Case> {};
 
 TEST_P(SharpenInvariants, HoldOnShapeUnderMotionScaleAndResharpening) {
   const Case c = GetParam();
-  const shapes::Shape &shape = shapes::shapeByName(c.shape);
   Mesh input;
-  shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, c.fraction), input);
+  marchingCubesOf(c.shape, c.fraction, input);
   const double diagonal = es_reliability::bboxDiagonal(input);
   es::SharpenOptions opt = es::SharpenOptions::paperMethod();
   opt.smoothMultiplier = c.multiplier;
@@ -225,9 +232,8 @@ INSTANTIATE_TEST_SUITE_P(Shapes, SharpenInvariants, ::testing::ValuesIn(allCases
 // Two copies of one chamfered mesh side by side are sharpened exactly like
 // one copy: components do not influence each other (same mean angle).
 TEST(SharpenInvariantsComponents, TwoCopiesSharpenLikeOne) {
-  const shapes::Shape &shape = shapes::shapeByName("lblock");
   Mesh one, two, single;
-  shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, 0.02), one);
+  marchingCubesOf("lblock", 0.02, one);
   // Coordinates on a 2^-20 grid, so that the shift by 4 below is exact in
   // float (it is not for arbitrary coordinates near 0).
   for (auto &v : one.vert)
@@ -272,9 +278,8 @@ TEST(SharpenInvariantsComponents, TwoCopiesSharpenLikeOne) {
 // A chamfered mesh cut open: processed, boundary edges never smooth, never split,
 // and the boundary vertices stay where they were.
 TEST(SharpenInvariantsComponents, OpenMeshKeepsItsBoundary) {
-  const shapes::Shape &shape = shapes::shapeByName("cube");
   Mesh closed;
-  shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, 0.02), closed);
+  const shapes::Shape &shape = marchingCubesOf("cube", 0.02, closed);
   // Remove every face whose centroid is above a plane slanted across the top corners.
   for (auto &f : closed.face) {
     const P3 c = (es_reliability::pos(*f.cV(0)) + es_reliability::pos(*f.cV(1)) +

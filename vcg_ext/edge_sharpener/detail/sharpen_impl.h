@@ -178,6 +178,19 @@ SharpenReport startSharpening(MeshType &m, const SharpenOptions &opt) {
   return report;
 }
 
+/// The paper's and the extended method's guards (the degenerate cleanup, the
+/// intersection guard), then the outcomes counted and the output finished.
+template <class MeshType>
+void guardAndFinish(MeshType &m, VertexMoves<MeshType> &moves, MeshLabels<MeshType> &labels,
+                    const SharpenOptions &opt, SharpenReport &report) {
+  reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
+  report.cleanup = removeDegenerateTriangles(m, moves, opt.degenerateAngleRad);
+  report.intersections =
+      revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
+  countOutcomes(moves, report);
+  finish(m, labels, opt, report);
+}
+
 /// The paper's method (section 3): six filters, split, place, clean up.
 template <class MeshType>
 SharpenReport sharpenPaper(MeshType &m, const SharpenOptions &opt) {
@@ -191,12 +204,7 @@ SharpenReport sharpenPaper(MeshType &m, const SharpenOptions &opt) {
   reportProgress(opt, 60, "Edge-Sharpener: vertex placement");
   placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt,
                         PlacementPolicy::paperMethod(opt), support);
-  reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
-  report.cleanup = removeDegenerateTriangles(m, moves, opt.degenerateAngleRad);
-  report.intersections =
-      revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
-  countOutcomes(moves, report);
-  finish(m, labels, opt, report);
+  guardAndFinish(m, moves, labels, opt, report);
   return report;
 }
 
@@ -215,12 +223,7 @@ SharpenReport sharpenExtended(MeshType &m, const SharpenOptions &opt) {
   placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt,
                         PlacementPolicy::extendedMethod(opt), zones.support);
   refineExtendedPlacement(m, moves, zones, opt, report);
-  reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
-  report.cleanup = removeDegenerateTriangles(m, moves, opt.degenerateAngleRad);
-  report.intersections =
-      revertSelfIntersections(m, moves, opt.degenerateAngleRad, report.longestInputEdge);
-  countOutcomes(moves, report);
-  finish(m, labels, opt, report);
+  guardAndFinish(m, moves, labels, opt, report);
   return report;
 }
 

@@ -216,6 +216,21 @@ inline std::size_t openFacesAround(const VertexFaceTable &vf, const std::vector<
 
 namespace detail {
 
+/// The region of vertex v's faces: kZone where none lies in a region,
+/// kCrease where several regions meet there.
+inline int regionAtVertex(const VertexFaceTable &vf, const FeatureZones &zones, std::size_t v) {
+  int region = kZone;
+  for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
+    const int r = zones.faceRegion[*fi];
+    if (r == kZone) continue;
+    if (region == kZone)
+      region = r;
+    else if (region != r)
+      return kCrease;
+  }
+  return region;
+}
+
 /// Per region: whether opening the faces around the `marked` vertices would
 /// leave it no interior vertex (interiorVertexRegions, with no marked vertex
 /// among its neighbours) although its faces span at least `minLength` (their
@@ -269,15 +284,8 @@ std::size_t openRegionContacts(const MeshType &m, const VertexFaceTable &vf, Fea
   const std::int64_t nv = std::int64_t(m.vert.size());
   std::vector<char> contact(nv, 0);
 #pragma omp parallel for schedule(static, 8192) if (nv > kParallelMin)
-  for (std::int64_t v = 0; v < nv; ++v) {
-    int seen = kZone;
-    for (const std::uint32_t *fi = vf.begin(v); fi != vf.end(v); ++fi) {
-      const int r = zones.faceRegion[*fi];
-      if (r == kZone) continue;
-      if (seen == kZone) seen = r;
-      if (seen != r) contact[v] = 1;
-    }
-  }
+  for (std::int64_t v = 0; v < nv; ++v)
+    contact[v] = detail::regionAtVertex(vf, zones, v) == kCrease;
   const std::vector<char> narrow =
       detail::narrowFacets(m, vf, contact, zones, minFacetLength, meshHasBorder);
   keptFacets = std::size_t(std::count(narrow.begin(), narrow.end(), 1));

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "../report.h"
+#include "../rulebook.h"
 #include "../util/attributes.h"
 #include "../util/fast_topology.h"
 #include "../util/geometry.h"
@@ -29,14 +30,6 @@
 
 namespace edge_sharpener {
 
-/// How far (sample spacings) a vertex may lie off a flat patch's plane and
-/// still count as on it: placement puts its vertices on the planes, and a
-/// remesher's samples of a flat face lie far closer than this to it.
-inline constexpr double kFoldPlaneSpacings = 0.1;
-/// The most faces a patch around a fold may grow to: a saddle corner's fold
-/// is undone within a few faces, and a fold no small patch undoes (a vertex
-/// moved out of its outline) is the intersection guard's.
-inline constexpr std::size_t kMaxFoldPatchFaces = 6;
 
 namespace detail {
 
@@ -57,6 +50,165 @@ Vec3 faceNormal(const FaceType &f) {
   return triangleNormal(positionOf(f.cV(0)), positionOf(f.cV(1)), positionOf(f.cV(2)));
 }
 
+/// Whether face f is in `patch` (sorted).
+template <class FaceType>
+bool inSortedPatch(const std::vector<FaceType *> &patch, const FaceType *f) {
+  return std::binary_search(patch.begin(), patch.end(), f);
+}
+
+/// The outline of a patch of faces: its half-edges whose other face is
+/// outside, by start vertex, each with its end and the face and edge across;
+/// and, once walked, its vertices in order.
+template <class MeshType>
+struct PatchOutline {
+  using FaceType = typename MeshType::FaceType;
+  using VertexType = typename MeshType::VertexType;
+  struct HalfEdge {
+    VertexType *to;
+    FaceType *outside;
+    int outsideEdge;
+  };
+  std::map<VertexType *, HalfEdge> next;
+  std::vector<VertexType *> loop;
+
+  bool contains(VertexType *a, const VertexType *b) const {
+    const auto it = next.find(a);
+    return it != next.end() && it->second.to == b;
+  }
+};
+
+/// Collects the outline's half-edges of `patch` (sorted). \return false
+/// where there are none, or the outline touches itself (a vertex starts two).
+template <class MeshType>
+bool collectOutline(const std::vector<typename MeshType::FaceType *> &patch,
+                    PatchOutline<MeshType> &outline) {
+  using HalfEdge = typename PatchOutline<MeshType>::HalfEdge;
+  for (auto *f : patch)
+    for (int j = 0; j < 3; ++j) {
+      if (inSortedPatch(patch, f->FFp(j))) continue;
+      if (!outline.next.emplace(f->V(j), HalfEdge{f->V((j + 1) % 3), f->FFp(j), f->FFi(j)}).second)
+        return false;
+    }
+  return !outline.next.empty();
+}
+
+/// Walks the outline from its first vertex into outline.loop. \return false
+/// where it breaks off.
+template <class MeshType>
+bool walkOutline(PatchOutline<MeshType> &outline) {
+  auto &loop = outline.loop;
+  loop = {outline.next.begin()->first};
+  while (loop.size() <= outline.next.size()) {
+    const auto it = outline.next.find(loop.back());
+    if (it == outline.next.end()) return false;
+    if (it->second.to == loop.front()) break;
+    loop.push_back(it->second.to);
+  }
+  return true;
+}
+
+/// How many vertices the faces of `patch` have.
+template <class FaceType>
+std::size_t vertexCount(const std::vector<FaceType *> &patch) {
+  std::vector<typename FaceType::VertexType *> vertices;
+  for (FaceType *f : patch)
+    for (int j = 0; j < 3; ++j) vertices.push_back(f->V(j));
+  std::sort(vertices.begin(), vertices.end());
+  return std::size_t(std::unique(vertices.begin(), vertices.end()) - vertices.begin());
+}
+
+/// The outline of `patch` (sorted), walked, when it is one loop holding all
+/// its vertices; false otherwise.
+template <class MeshType>
+bool diskOutline(const std::vector<typename MeshType::FaceType *> &patch,
+                 PatchOutline<MeshType> &outline) {
+  if (!collectOutline(patch, outline) || !walkOutline(outline)) return false;
+  const std::size_t n = outline.loop.size();
+  // A disk whose vertices are all on its outline has n - 2 faces.
+  return n == outline.next.size() && n == vertexCount(patch) && patch.size() + 2 == n;
+}
+
+/// The vertices of `loop` in coordinates on the plane (origin, unit normal),
+/// the first axis along its first edge; empty where that edge is normal to
+/// the plane.
+template <class VertexType>
+std::vector<Vec2> onPlane(const std::vector<VertexType *> &loop, const Vec3 &origin,
+                          const Vec3 &normal) {
+  Vec3 u = positionOf(loop[1]) - positionOf(loop[0]);
+  u = u - normal * (u * normal);
+  if (!(u.Norm() > 0)) return {};
+  u /= u.Norm();
+  const Vec3 v = normal ^ u;
+  std::vector<Vec2> points;
+  for (VertexType *x : loop) {
+    const Vec3 d = positionOf(x) - origin;
+    points.emplace_back(d * u, d * v);
+  }
+  return points;
+}
+
+/// Whether a face around `a` outside `patch` (sorted) has vertex `b`: edge
+/// (a, b) is then an edge outside already.
+template <class FaceType, class VertexType>
+bool edgeOutsidePatch(const std::vector<FaceType *> &patch, const VertexType *a,
+                      const VertexType *b) {
+  std::vector<FaceType *> star;
+  for (FaceType *f : patch)
+    for (int z = 0; z < 3; ++z)
+      if (f->V(z) == a) facesAround(f, z, star);
+  for (FaceType *f : star)
+    if (!inSortedPatch(patch, f))
+      for (int k = 0; k < 3; ++k)
+        if (f->V(k) == b) return true;
+  return false;
+}
+
+/// Whether no inner edge of `tiles` (triangles of outline.loop's indices)
+/// is an edge outside `patch` already: the mesh would not stay manifold.
+template <class MeshType>
+bool innerEdgesAreNew(const std::vector<typename MeshType::FaceType *> &patch,
+                      const PatchOutline<MeshType> &outline,
+                      const std::vector<std::array<int, 3>> &tiles) {
+  for (const auto &t : tiles)
+    for (int j = 0; j < 3; ++j) {
+      auto *a = outline.loop[t[j]], *b = outline.loop[t[(j + 1) % 3]];
+      if (!outline.contains(a, b) && edgeOutsidePatch(patch, a, b)) return false;
+    }
+  return true;
+}
+
+/// Makes face f's edge j and face g's edge k each other's neighbours.
+template <class FaceType>
+void linkEdges(FaceType *f, int j, FaceType *g, int k) {
+  f->FFp(j) = g, f->FFi(j) = k;
+  g->FFp(k) = f, g->FFi(k) = j;
+}
+
+/// Writes `tiles` into the faces of `patch` and links them: across the
+/// outline to the faces outside, across the inner edges to each other.
+template <class MeshType>
+void writeTiles(const std::vector<typename MeshType::FaceType *> &patch,
+                const PatchOutline<MeshType> &outline,
+                const std::vector<std::array<int, 3>> &tiles) {
+  using FaceType = typename MeshType::FaceType;
+  using VertexType = typename MeshType::VertexType;
+  for (std::size_t i = 0; i < tiles.size(); ++i)
+    for (int j = 0; j < 3; ++j) patch[i]->V(j) = outline.loop[tiles[i][j]];
+  std::map<std::pair<VertexType *, VertexType *>, std::pair<FaceType *, int>> inner;
+  for (FaceType *f : patch)
+    for (int j = 0; j < 3; ++j) {
+      VertexType *a = f->V(j), *b = f->V((j + 1) % 3);
+      if (outline.contains(a, b)) {
+        const auto &h = outline.next.at(a);
+        linkEdges(f, j, h.outside, h.outsideEdge);
+        continue;
+      }
+      const auto [it, first] =
+          inner.emplace(std::make_pair(std::min(a, b), std::max(a, b)), std::make_pair(f, j));
+      if (!first) linkEdges(f, j, it->second.first, it->second.second);
+    }
+}
+
 /// Tiles `patch` (sorted) again on the plane (origin, unit normal), in
 /// place, FF adjacency kept, when its outline is one loop holding all its
 /// vertices, simple and counter-clockwise seen from the normal, and tiles
@@ -65,88 +217,13 @@ Vec3 faceNormal(const FaceType &f) {
 template <class MeshType>
 bool retileFlatPatch(const std::vector<typename MeshType::FaceType *> &patch, const Vec3 &origin,
                      const Vec3 &normal, double minAngleRad) {
-  using FaceType = typename MeshType::FaceType;
-  using VertexType = typename MeshType::VertexType;
-  const auto inPatch = [&](const FaceType *f) {
-    return std::binary_search(patch.begin(), patch.end(), f);
-  };
-  struct HalfEdge {
-    VertexType *to;
-    FaceType *outside;
-    int outsideEdge;
-  };
-  std::map<VertexType *, HalfEdge> next;  // the outline: half-edges whose other face is outside
-  std::vector<VertexType *> vertices;
-  for (FaceType *f : patch)
-    for (int j = 0; j < 3; ++j) {
-      vertices.push_back(f->V(j));
-      if (inPatch(f->FFp(j))) continue;
-      if (!next.emplace(f->V(j), HalfEdge{f->V((j + 1) % 3), f->FFp(j), f->FFi(j)}).second)
-        return false;  // the outline touches itself
-    }
-  std::sort(vertices.begin(), vertices.end());
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  if (next.empty()) return false;
-  std::vector<VertexType *> loop{next.begin()->first};
-  while (loop.size() <= next.size()) {
-    const auto it = next.find(loop.back());
-    if (it == next.end()) return false;
-    if (it->second.to == loop.front()) break;
-    loop.push_back(it->second.to);
-  }
-  // A disk whose vertices are all on its outline has n - 2 faces.
-  if (loop.size() != next.size() || loop.size() != vertices.size() ||
-      patch.size() + 2 != loop.size())
-    return false;
-  Vec3 u = positionOf(loop[1]) - positionOf(loop[0]);
-  u = u - normal * (u * normal);
-  if (!(u.Norm() > 0)) return false;
-  u /= u.Norm();
-  const Vec3 v = normal ^ u;
-  std::vector<Vec2> outline;
-  for (VertexType *x : loop) {
-    const Vec3 d = positionOf(x) - origin;
-    outline.emplace_back(d * u, d * v);
-  }
-  const std::vector<std::array<int, 3>> tiles = triangulateSimplePolygon(outline, minAngleRad);
-  if (tiles.size() != patch.size()) return false;
-  const auto outlineEdge = [&](VertexType *a, VertexType *b) {
-    const auto it = next.find(a);
-    return it != next.end() && it->second.to == b;
-  };
-  for (const auto &t : tiles)
-    for (int j = 0; j < 3; ++j) {
-      VertexType *a = loop[t[j]], *b = loop[t[(j + 1) % 3]];
-      if (outlineEdge(a, b)) continue;
-      std::vector<FaceType *> star;  // an inner edge must not be an edge outside already
-      for (FaceType *f : patch)
-        for (int z = 0; z < 3; ++z)
-          if (f->V(z) == a) facesAround(f, z, star);
-      for (FaceType *f : star)
-        if (!inPatch(f))
-          for (int k = 0; k < 3; ++k)
-            if (f->V(k) == b) return false;
-    }
-  for (std::size_t i = 0; i < tiles.size(); ++i)
-    for (int j = 0; j < 3; ++j) patch[i]->V(j) = loop[tiles[i][j]];
-  std::map<std::pair<VertexType *, VertexType *>, std::pair<FaceType *, int>> inner;
-  for (FaceType *f : patch)
-    for (int j = 0; j < 3; ++j) {
-      VertexType *a = f->V(j), *b = f->V((j + 1) % 3);
-      if (outlineEdge(a, b)) {
-        const HalfEdge &h = next.at(a);
-        f->FFp(j) = h.outside, f->FFi(j) = h.outsideEdge;
-        h.outside->FFp(h.outsideEdge) = f, h.outside->FFi(h.outsideEdge) = j;
-        continue;
-      }
-      const auto [it, first] =
-          inner.emplace(std::make_pair(std::min(a, b), std::max(a, b)), std::make_pair(f, j));
-      if (first) continue;
-      FaceType *g = it->second.first;
-      const int k = it->second.second;
-      f->FFp(j) = g, f->FFi(j) = k;
-      g->FFp(k) = f, g->FFi(k) = j;
-    }
+  PatchOutline<MeshType> outline;
+  if (!diskOutline(patch, outline)) return false;
+  const std::vector<Vec2> points = onPlane(outline.loop, origin, normal);
+  if (points.empty()) return false;
+  const std::vector<std::array<int, 3>> tiles = triangulateSimplePolygon(points, minAngleRad);
+  if (tiles.size() != patch.size() || !innerEdgesAreNew(patch, outline, tiles)) return false;
+  writeTiles(patch, outline, tiles);
   return true;
 }
 
@@ -226,7 +303,7 @@ bool foldedOnPlane(const FaceType &f, int j, double tolerance) {
   const FaceType *g = f.cFFp(j);
   if (g == &f) return false;
   const Vec3 nf = faceNormal(f), ng = faceNormal(*g);
-  if (!(nf.Norm() > 0 && ng.Norm() > 0) || nf * ng > -0.5 * nf.Norm() * ng.Norm()) return false;
+  if (!(nf.Norm() > 0 && ng.Norm() > 0) || nf * ng > VertexRules::kFoldMaxCos * nf.Norm() * ng.Norm()) return false;
   const Vec3 onEdge = positionOf(f.cV(j));
   const Vec3 farF = positionOf(f.cV((j + 2) % 3)) - onEdge;
   const Vec3 farG = positionOf(g->cV((f.cFFi(j) + 2) % 3)) - onEdge;
@@ -274,7 +351,7 @@ PlanarFoldStats unfoldPlanarPatches(MeshType &m, const IsMoved &isMoved, double 
     for (int j = 0; j < 3; ++j)  // a patch tiled before may have taken this fold away
       if (detail::foldedOnPlane(*f, j, tolerance)) {
         stats.patches +=
-            detail::unfoldAround<MeshType>(f, j, tolerance, minAngleRad, kMaxFoldPatchFaces);
+            detail::unfoldAround<MeshType>(f, j, tolerance, minAngleRad, VertexRules::kMaxFoldPatchFaces);
         break;
       }
   }

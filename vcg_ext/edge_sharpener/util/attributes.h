@@ -7,53 +7,32 @@
 #include <vcg/complex/complex.h>
 
 #include <cstddef>
+#include <type_traits>
 
 namespace edge_sharpener {
 
 namespace detail {
 
-/// What differs between per-face and per-vertex attributes.
-template <class MeshType>
-struct FaceAttributes {
-  using Element = typename MeshType::FaceType;
-  template <class T>
-  using Handle = typename MeshType::template PerFaceAttributeHandle<T>;
-  static std::size_t count(const MeshType &m) { return m.face.size(); }
-  template <class T>
-  static Handle<T> add(MeshType &m) {
-    return vcg::tri::Allocator<MeshType>::template AddPerFaceAttribute<T>(m);
-  }
-  template <class T>
-  static void remove(MeshType &m, Handle<T> &h) {
-    vcg::tri::Allocator<MeshType>::DeletePerFaceAttribute(m, h);
-  }
-};
-
-template <class MeshType>
-struct VertexAttributes {
-  using Element = typename MeshType::VertexType;
-  template <class T>
-  using Handle = typename MeshType::template PerVertexAttributeHandle<T>;
-  static std::size_t count(const MeshType &m) { return m.vert.size(); }
-  template <class T>
-  static Handle<T> add(MeshType &m) {
-    return vcg::tri::Allocator<MeshType>::template AddPerVertexAttribute<T>(m);
-  }
-  template <class T>
-  static void remove(MeshType &m, Handle<T> &h) {
-    vcg::tri::Allocator<MeshType>::DeletePerVertexAttribute(m, h);
-  }
-};
-
-/// A temporary attribute of type T on every element of one kind.
-template <class MeshType, class T, class Kind>
+/// A temporary attribute of type T on every face (OnFaces) or every vertex.
+template <class MeshType, class T, bool OnFaces>
 class ScopedAttribute {
+  using Allocator = vcg::tri::Allocator<MeshType>;
+  using Handle = std::conditional_t<OnFaces, typename MeshType::template PerFaceAttributeHandle<T>,
+                                    typename MeshType::template PerVertexAttributeHandle<T>>;
+
  public:
-  using Element = typename Kind::Element;
-  explicit ScopedAttribute(MeshType &m, const T &init = T()) : m_(m), h_(Kind::template add<T>(m)) {
-    for (std::size_t i = 0; i < Kind::count(m); ++i) h_[i] = init;
+  using Element =
+      std::conditional_t<OnFaces, typename MeshType::FaceType, typename MeshType::VertexType>;
+  explicit ScopedAttribute(MeshType &m, const T &init = T()) : m_(m), h_(add(m)) {
+    const std::size_t count = OnFaces ? m.face.size() : m.vert.size();
+    for (std::size_t i = 0; i < count; ++i) h_[i] = init;
   }
-  ~ScopedAttribute() { Kind::remove(m_, h_); }
+  ~ScopedAttribute() {
+    if constexpr (OnFaces)
+      Allocator::DeletePerFaceAttribute(m_, h_);
+    else
+      Allocator::DeletePerVertexAttribute(m_, h_);
+  }
   ScopedAttribute(const ScopedAttribute &) = delete;
   ScopedAttribute &operator=(const ScopedAttribute &) = delete;
 
@@ -65,17 +44,23 @@ class ScopedAttribute {
   const T &operator[](std::size_t i) const { return (*h_._handle)[i]; }
 
  private:
+  static Handle add(MeshType &m) {
+    if constexpr (OnFaces)
+      return Allocator::template AddPerFaceAttribute<T>(m);
+    else
+      return Allocator::template AddPerVertexAttribute<T>(m);
+  }
+
   MeshType &m_;
-  typename Kind::template Handle<T> h_;
+  Handle h_;
 };
 
 }  // namespace detail
 
 template <class MeshType, class T>
-using ScopedFaceAttribute = detail::ScopedAttribute<MeshType, T, detail::FaceAttributes<MeshType>>;
+using ScopedFaceAttribute = detail::ScopedAttribute<MeshType, T, true>;
 template <class MeshType, class T>
-using ScopedVertexAttribute =
-    detail::ScopedAttribute<MeshType, T, detail::VertexAttributes<MeshType>>;
+using ScopedVertexAttribute = detail::ScopedAttribute<MeshType, T, false>;
 
 /// Position of a mesh vertex in double precision.
 template <class VertexType>
