@@ -657,27 +657,50 @@ void buildReference(const Shape& shape, M& mesh) {
   detail::finishClosedMesh(mesh);
 }
 
-/// Marching cubes of the shape's distance function on a grid of cubic cells of side
-/// `cellSize`. The grid is shifted by fixed fractions of a cell (not multiples of any
-/// feature coordinate), so grid planes cut the features at generic positions and sharp
-/// edges/corners come out chamfered. The output is deterministic, closed, outward-oriented
-/// and 2-manifold, without duplicate or unreferenced vertices or zero-area faces; FF
-/// adjacency, normals and bounding box are updated. Memory: one float per grid node.
-template <class M>
-void marchingCubes(const Shape& shape, double cellSize, M& mesh) {
-  vcg::tri::RequireFFAdjacency(mesh);
+/// The regular grid marchingCubes() samples the distance function on: node (x, y, z), with
+/// 0 <= x < nodes[0] etc., is at origin + (x, y, z) * cellSize (computed in exactly that way).
+/// dual_contouring.h samples the same grid.
+struct SamplingGrid {
+  Point3d origin;
+  double cellSize = 0;
+  vcg::Point3i nodes;
+
+  Point3d node(int x, int y, int z) const { return origin + Point3d(x, y, z) * cellSize; }
+};
+
+/// The grid of marchingCubes(shape, cellSize): two node layers of padding outside the
+/// bounding box, and planes shifted by fixed fractions of a cell (not multiples of any
+/// feature coordinate), so grid planes cut the features at generic positions.
+inline SamplingGrid marchingCubesGrid(const Shape& shape, double cellSize) {
   if (!(cellSize > 0) || !std::isfinite(cellSize))
     throw std::invalid_argument("marchingCubes: cell size must be positive");
   const double h = cellSize;
   // At least one node layer outside the box on each side keeps the surface closed.
   const int padding = 2;
   const Point3d offset = Point3d(0.3183099, 0.2718282, 0.1414214) * h;
-  const Point3d origin = shape.bbox.min - Point3d(padding, padding, padding) * h - offset;
-  vcg::Point3i size;
+  SamplingGrid grid;
+  grid.cellSize = h;
+  grid.origin = shape.bbox.min - Point3d(padding, padding, padding) * h - offset;
   for (int i = 0; i < 3; ++i)
-    size[i] = static_cast<int>(std::ceil((shape.bbox.max[i] - origin[i]) / h)) + padding + 2;
-  const double nodes = double(size[0]) * size[1] * size[2];
+    grid.nodes[i] =
+        static_cast<int>(std::ceil((shape.bbox.max[i] - grid.origin[i]) / h)) + padding + 2;
+  const double nodes = double(grid.nodes[0]) * grid.nodes[1] * grid.nodes[2];
   if (nodes > 2e9) throw std::invalid_argument("marchingCubes: cell size too small");
+  return grid;
+}
+
+/// Marching cubes of the shape's distance function on a grid of cubic cells of side
+/// `cellSize`, marchingCubesGrid(): grid planes cut the features at generic positions, so sharp
+/// edges/corners come out chamfered. The output is deterministic, closed, outward-oriented
+/// and 2-manifold, without duplicate or unreferenced vertices or zero-area faces; FF
+/// adjacency, normals and bounding box are updated. Memory: one float per grid node.
+template <class M>
+void marchingCubes(const Shape& shape, double cellSize, M& mesh) {
+  vcg::tri::RequireFFAdjacency(mesh);
+  const SamplingGrid grid = marchingCubesGrid(shape, cellSize);
+  const double h = grid.cellSize;
+  const Point3d& origin = grid.origin;
+  const vcg::Point3i& size = grid.nodes;
 
   detail::McVolume volume;
   const Point3d extent = Point3d(size[0], size[1], size[2]) * h;
@@ -689,7 +712,7 @@ void marchingCubes(const Shape& shape, double cellSize, M& mesh) {
   for (int z = 0; z < size[2]; ++z)
     for (int y = 0; y < size[1]; ++y)
       for (int x = 0; x < size[0]; ++x) {
-        const float value = static_cast<float>(shape.signedDistance(origin + Point3d(x, y, z) * h));
+        const float value = static_cast<float>(shape.signedDistance(grid.node(x, y, z)));
         volume.Val(x, y, z) = value == 0.0f ? onSurfaceNudge : value;
       }
 
