@@ -1,7 +1,15 @@
 // edge-sharpener: command-line front end of the Edge-Sharpener core.
 //
-//   edge-sharpener IN OUT [options of the option table] [--detect-only] [--json]
+//   edge-sharpener IN OUT [options of the option table] [--detect-only]
 //                         [--reference EXACT] [--sharp-edges EDGES.obj]
+//                         [-v | -q | --json]
+//
+// --help lists the option table's ordinary options, --help-all every option by
+// group. By default it prints four lines: the input, what was restored and left
+// (formatVerdictSummary), the time, the output; -v adds the stage report, -q
+// prints nothing, --json the report as JSON.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdint>
@@ -29,7 +37,7 @@ namespace {
 
 struct CliOptions {
   std::string input, output, reference, sharpEdges;
-  bool detectOnly = false, json = false, quiet = false;
+  bool detectOnly = false, json = false, quiet = false, verbose = false;
   /// One slot per row of the option table: the value given on the command
   /// line (numbers and flags as doubles, choices by name), and whether it was.
   std::vector<double> number = std::vector<double>(es::optionTable().size(), 0.0);
@@ -59,8 +67,63 @@ std::string numberText(double value) {
   return s.str();
 }
 
-/// Every row of the option table as a command-line option, in its group
-/// (ordinary options first in --help).
+/// `text` broken into lines of at most `width` characters (CLI11 indents the
+/// lines after the first under the option's column).
+std::string wrapped(const std::string &text, std::size_t width) {
+  std::istringstream words(text);
+  std::string word, out, line;
+  while (words >> word) {
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      out += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  return out + line;
+}
+
+/// CLI11's help with each description wrapped to fit 100 columns.
+class WrappingFormatter : public CLI::Formatter {
+ public:
+  static constexpr std::size_t kColumn = 30, kWidth = 100;
+  WrappingFormatter() { column_width(kColumn); }
+  std::string make_option_desc(const CLI::Option *o) const override {
+    return wrapped(CLI::Formatter::make_option_desc(o), kWidth - kColumn);
+  }
+  std::string make_description(const CLI::App *app) const override {
+    return wrapped(app->get_description(), kWidth) + "\n";
+  }
+  /// The description, usage, positionals, then each group, one blank line
+  /// apart (CLI11's own puts two): --help (mode Normal) the ordinary options
+  /// and the program's own, --help-all (mode All) each method's tuning too.
+  std::string make_help(const CLI::App *app, std::string name,
+                        CLI::AppFormatMode mode) const override {
+    const bool all = mode == CLI::AppFormatMode::All;
+    std::string out = make_description(app) + make_usage(app, name) + make_positionals(app);
+    for (const std::string &group : app->get_groups()) {
+      if (!all && isTuningGroup(group)) continue;
+      const auto options = app->get_options(
+          [&group](const CLI::Option *o) { return o->get_group() == group && o->nonpositional(); });
+      if (!group.empty() && !options.empty()) out += make_group(group, false, options);
+    }
+    return out + "\n" +
+           wrapped(all ? "The tuning options change the rules each method decides by; what each "
+                         "rule does and why: docs/auto-method-decisions.md."
+                       : "Each method's tuning options: --help-all.",
+                   kWidth) +
+           "\n";
+  }
+
+ private:
+  static bool isTuningGroup(const std::string &title) {
+    for (const es::OptionSpec &spec : es::optionTable())
+      if (!spec.ordinary() && title == es::toString(spec.group)) return true;
+    return false;
+  }
+};
+
+/// Every row of the option table as a command-line option, in its group: the
+/// ordinary ones in --help, each method's tuning in --help-all only.
 void addTableOptions(CLI::App &app, CliOptions &cli) {
   const auto &table = es::optionTable();
   for (std::size_t i = 0; i < table.size(); ++i) {
@@ -71,7 +134,7 @@ void addTableOptions(CLI::App &app, CliOptions &cli) {
     CLI::Option *o = nullptr;
     if (spec.type == es::OptionType::Flag) {
       // A flag turns its option from the default to the other value.
-      if (spec.defaultValue() != 0) help = "turn off the " + std::string(spec.label) + ": " + help;
+      if (spec.defaultValue() != 0) help += " On by default: the flag turns it off.";
       o = app.add_flag(flag)->description(help);
     } else if (spec.type == es::OptionType::Choice) {
       std::vector<std::string> names(spec.choices.begin(), spec.choices.end());
@@ -95,9 +158,21 @@ void addTableOptions(CLI::App &app, CliOptions &cli) {
   }
 }
 
+/// Progress of a long run on stderr: a line per stage (--verbose)...
 bool stderrProgress(const int percent, const char *stage) {
   std::fprintf(stderr, "[%3d%%] %s\n", percent, stage);
   return true;
+}
+
+/// ...or, on a terminal, one line rewritten in place and erased at the end.
+bool terminalProgress(const int percent, const char *stage) {
+  std::fprintf(stderr, "\r\033[K[%3d%%] %s", percent, stage);
+  std::fflush(stderr);
+  return true;
+}
+void eraseTerminalProgress() {
+  std::fprintf(stderr, "\r\033[K");
+  std::fflush(stderr);
 }
 
 bool sameFile(const std::string &a, const std::string &b) {
@@ -173,7 +248,10 @@ int run(const CliOptions &cli) {
   es::SharpenOptions opt = cli.sharpenOptions();
   opt.colorize = opt.colorize || cli.detectOnly;
   constexpr int kProgressFaces = 200000;  // report stages on long runs only
-  if (!cli.quiet && m.FN() >= kProgressFaces) opt.progress = stderrProgress;
+  const bool progressLine = !cli.quiet && !cli.verbose && !cli.json && m.FN() >= kProgressFaces &&
+                            ::isatty(STDERR_FILENO);
+  if (cli.verbose && m.FN() >= kProgressFaces) opt.progress = stderrProgress;
+  if (progressLine) opt.progress = terminalProgress;
 
   // --sharp-edges: the attribute sharpen() fills when it is there (restored_edges.h).
   using Allocator = vcg::tri::Allocator<es::Mesh>;
@@ -181,8 +259,14 @@ int run(const CliOptions &cli) {
     Allocator::AddPerVertexAttribute<std::uint8_t>(m, es::kRestoredVertexAttribute);
 
   const auto start = std::chrono::steady_clock::now();
-  const es::SharpenReport report =
-      cli.detectOnly ? es::detectChamfers(m, opt) : es::sharpen(m, opt);
+  es::SharpenReport report;
+  try {
+    report = cli.detectOnly ? es::detectChamfers(m, opt) : es::sharpen(m, opt);
+  } catch (...) {
+    if (progressLine) eraseTerminalProgress();
+    throw;
+  }
+  if (progressLine) eraseTerminalProgress();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -213,19 +297,24 @@ int run(const CliOptions &cli) {
     if (sharpEdgeCount) j["sharp_edges"] = {{"file", cli.sharpEdges}, {"edges", *sharpEdgeCount}};
     std::cout << j.dump(2) << "\n";
   } else if (!cli.quiet) {
-    std::cout << es::formatReport(report) << "time: " << seconds << " s\n";
+    // At most four lines (five with --reference); --verbose adds the stages.
+    std::cout << "input: " << cli.input << ", " << report.inputVertices << " vertices, "
+              << report.inputFaces << " faces";
+    if (cli.verbose) std::cout << ", longest edge " << report.longestInputEdge;
+    std::cout << "\n";
+    if (cli.verbose) std::cout << es::formatStages(report);
+    std::cout << es::formatVerdictSummary(report) << "\n";
+    std::printf("time: %.*f s\n", seconds < 10 ? 3 : seconds < 100 ? 1 : 0, seconds);
+    std::cout << "output: " << cli.output << ", " << m.VN() << " vertices, " << m.FN() << " faces";
     if (sharpEdgeCount)
-      std::cout << "sharp edges: " << *sharpEdgeCount << " written to " << cli.sharpEdges << "\n";
-    if (before) {
-      std::printf("distance to %s (%% of its bbox diagonal %.4g):\n", cli.reference.c_str(),
-                  before->referenceDiagonal);
-      std::printf("  before: max %.4f%%  mean %.5f%%  RMS %.5f%%\n", before->maxPercent(),
-                  before->meanPercent(), before->rmsPercent());
-      std::printf("  after:  max %.4f%%  mean %.5f%%  RMS %.5f%%\n", after->maxPercent(),
-                  after->meanPercent(), after->rmsPercent());
-      std::printf("  reduction: max x%.2f, RMS x%.2f\n", before->max() / after->max(),
-                  before->rms() / after->rms());
-    }
+      std::cout << "; " << *sharpEdgeCount << " sharp edges in " << cli.sharpEdges;
+    std::cout << "\n";
+    if (before)
+      std::printf(
+          "distance to the reference, %% of its diagonal: max %.4f%% -> %.4f%% (x%.2f), RMS "
+          "%.5f%% -> %.5f%% (x%.2f)\n",
+          before->maxPercent(), after->maxPercent(), before->max() / after->max(),
+          before->rmsPercent(), after->rmsPercent(), before->rms() / after->rms());
   }
   return 0;
 }
@@ -239,21 +328,36 @@ int main(int argc, char **argv) {
       "or scanning cut into chamfers (Attene et al. 2003). Reads and writes PLY, OFF, OBJ, STL; "
       "vertex colours are kept, each new vertex with the mean colour of those it was made "
       "between."};
+  app.formatter(std::make_shared<WrappingFormatter>());
+  app.set_help_flag("-h,--help", "print the ordinary options and exit");
+  app.set_help_all_flag("--help-all", "print every option, each method's tuning too, and exit");
   app.add_option("input", cli.input, "mesh to sharpen")->required()->check(CLI::ExistingFile);
   app.add_option("output", cli.output, "where to write the result")->required();
   addTableOptions(app, cli);
   app.add_flag("--detect-only", cli.detectOnly,
                "only detect: colour and select chamfer/corner faces, no geometry change");
-  app.add_flag("--json", cli.json, "print the report as JSON");
   app.add_option("--reference", cli.reference,
                  "exact shape: print the two-sided (Metro) distance to it before and after")
       ->check(CLI::ExistingFile);
   app.add_option("--sharp-edges", cli.sharpEdges,
                  "also write the restored sharp edges to this OBJ file, as line elements "
                  "(feature lines for a remesher or a modeller)");
+  app.add_flag("-v,--verbose", cli.verbose, "also print what each stage did");
   app.add_flag("-q,--quiet", cli.quiet, "print nothing on success");
-  CLI11_PARSE(app, argc, argv);
+  app.add_flag("--json", cli.json, "print the report as JSON instead");
   try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success &help) {  // --help, --help-all
+    return app.exit(help);
+  } catch (const CLI::ParseError &e) {  // one line, as every other error
+    const bool usage =
+        dynamic_cast<const CLI::RequiredError *>(&e) || dynamic_cast<const CLI::ExtrasError *>(&e);
+    std::cerr << "edge-sharpener: error: " << e.what() << (usage ? " (see --help)" : "") << "\n";
+    return e.get_exit_code();
+  }
+  try {
+    if (cli.verbose && cli.quiet)
+      throw std::runtime_error("--verbose and --quiet exclude each other");
     return run(cli);
   } catch (const std::exception &e) {
     std::cerr << "edge-sharpener: error: " << e.what() << "\n";

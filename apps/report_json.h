@@ -25,6 +25,9 @@ inline nlohmann::json optionsToJson(const SharpenOptions &opt) {
   return j;
 }
 
+/// The report as JSON: each stage's counts; "evidence" (the auto method) with
+/// "verdicts", {verdict name: features}, every verdict; "summary", the line
+/// formatVerdictSummary() writes.
 inline nlohmann::json reportToJson(const SharpenReport &r) {
   nlohmann::json placement = {{"moved", r.placement.moved()},
                               {"fallbacks", r.placement.fallbacks()},
@@ -95,7 +98,10 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"projections_rejected", r.extended.projectionsRejected},
                      {"max_projection", r.extended.maxProjection},
                      {"sample_spacing", r.extended.sampleSpacing}};
-  if (r.evidenceGuard)
+  if (r.evidenceGuard) {
+    nlohmann::json verdicts = nlohmann::json::object();
+    for (int i = 0; i < kVerdictCount; ++i)
+      verdicts[toString(static_cast<Verdict>(i))] = r.evidence.verdicts[i];
     j["evidence"] = {{"features", r.evidence.features},
                      {"weak_features", r.evidence.weakFeatures},
                      {"already_sharp_features", r.evidence.alreadySharpFeatures},
@@ -113,7 +119,10 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"faces_given_back", r.evidence.facesGivenBack},
                      {"resting_vertices_removed", r.evidence.restingVerticesRemoved},
                      {"vertices_removed", r.evidence.verticesRemoved},
-                     {"faces_removed", r.evidence.facesRemoved}};
+                     {"faces_removed", r.evidence.facesRemoved},
+                     {"verdicts", verdicts}};
+  }
+  j["summary"] = formatVerdictSummary(r);
   return j;
 }
 

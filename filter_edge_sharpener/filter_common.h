@@ -1,10 +1,10 @@
 // What the MeshLab adapters share, whatever MeshLab's plugin API: the filter
 // table (names, descriptions, core entry points), the parameters (from the
-// option table of vcg_ext/edge_sharpener/option_table.h), and one filter run
-// that prepares the CMeshO, calls the core and leaves a refused mesh as it
-// was. The includer includes its MeshLab's plugin interface header first
-// (RichParameterList, MeshModel and MeshDocument are the same in 2020.09 and
-// 2022.02+).
+// option table of vcg_ext/edge_sharpener/option_table.h: labels and help are
+// the table's), and one filter run that prepares the CMeshO, calls the core
+// and leaves a refused mesh as it was. The includer includes its MeshLab's
+// plugin interface header first (RichParameterList, MeshModel and MeshDocument
+// are the same in 2020.09 and 2022.02+).
 #pragma once
 
 #include <edge_sharpener/edge_sharpener.h>
@@ -14,6 +14,9 @@
 #include <vcg/complex/algorithms/update/selection.h>
 #include <vcg/complex/allocate.h>
 
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <sstream>
 #include <string>
@@ -27,6 +30,9 @@ struct FilterSpec {
   const char *pythonName;  ///< PyMeshLab's name of the filter (2022.02+)
   const char *info;        ///< HTML, without the bibliography
   unsigned parameterMask;  ///< which rows of the option table it shows (MeshLabFilterMask)
+  /// Also shows each method's tuning, as advanced parameters, where MeshLab
+  /// has them (2022.02+: RichParameter's isAdvanced, behind the dialog's ▼).
+  bool tuning;
   SharpenReport (*run)(CMeshO &, const SharpenOptions &);
   bool alwaysColorize;  ///< paints colours whatever the parameters say
   int postCondition;
@@ -57,7 +63,7 @@ inline const std::vector<FilterSpec> &filterTable() {
        "angle are removed.<br>"
        "Needs a two-manifold triangle mesh (point clouds and non-manifold meshes are "
        "refused and left untouched). The report of every stage is written to the log.",
-       kInSharpen, &sharpen<CMeshO>, false,
+       kInSharpen, true, &sharpen<CMeshO>, false,
        MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |
            MeshModel::MM_FACECOLOR | MeshModel::MM_FACEFLAGSELECT},
       {"Edge-Sharpener: Detect Chamfers", "detect_chamfers",
@@ -67,7 +73,7 @@ inline const std::vector<FilterSpec> &filterTable() {
        "others grey) and selects the chamfer and corner triangles, i.e. the faces that "
        "<i>Sharpen Chamfered Edges</i> would subdivide.<br>"
        "Useful to tune the smooth-edge multiplier before sharpening.",
-       kInDetect, &detectChamfers<CMeshO>, true,
+       kInDetect, false, &detectChamfers<CMeshO>, true,
        MeshModel::MM_VERTCOLOR | MeshModel::MM_FACECOLOR | MeshModel::MM_FACEFLAGSELECT},
   };
   return table;
@@ -77,21 +83,50 @@ inline const FilterSpec &filterSpec(int id) {
   return filterTable().at(std::size_t(id));
 }
 
-/// The rows of the option table that filter `f` shows, in table order.
-inline std::vector<const OptionSpec *> parametersOf(const FilterSpec &f) {
+/// The rows of the option table that filter `f` shows, in table order: its
+/// ordinary options, and with `withTuning` (MeshLab 2022.02+) each method's
+/// tuning too when the filter takes it.
+inline std::vector<const OptionSpec *> parametersOf(const FilterSpec &f, bool withTuning) {
   std::vector<const OptionSpec *> out;
   for (const OptionSpec &spec : optionTable())
-    if (spec.meshlabFilters & f.parameterMask) out.push_back(&spec);
+    if ((spec.meshlabFilters & f.parameterMask) || (withTuning && f.tuning && !spec.ordinary()))
+      out.push_back(&spec);
   return out;
 }
 
-/// A MeshLab parameter of one option row, at the option's default. `extra`
-/// forwards the 2022.02+ constructor arguments (hidden, category), if any.
+/// An option's parameter name in MeshLab and its .mlx scripts: the table's,
+/// else (the tuning options) its key in camelCase, as the ordinary ones are
+/// named (max_label_hops: maxLabelHops).
+inline QString parameterName(const OptionSpec &spec) {
+  if (!spec.meshlabName.empty())
+    return QString::fromUtf8(spec.meshlabName.data(), int(spec.meshlabName.size()));
+  std::string name;
+  bool upper = false;
+  for (const char c : spec.key) {
+    if (c == '_') {
+      upper = true;
+      continue;
+    }
+    name += upper ? char(std::toupper(static_cast<unsigned char>(c))) : c;
+    upper = false;
+  }
+  return QString::fromStdString(name);
+}
+
+/// A MeshLab parameter of one option row, at the option's default: the
+/// table's label, its help as the tooltip (a tuning option's with its group
+/// and unit). `extra` forwards the 2022.02+ constructor arguments (isAdvanced,
+/// category), if any.
 template <class... Extra>
 void addParameter(RichParameterList &par, const OptionSpec &spec, Extra... extra) {
-  const QString name = QString::fromUtf8(spec.meshlabName.data(), int(spec.meshlabName.size()));
+  const QString name = parameterName(spec);
   const QString label = QString::fromUtf8(spec.label.data(), int(spec.label.size()));
-  const QString help = QString::fromUtf8(spec.help.data(), int(spec.help.size()));
+  QString help = QString::fromUtf8(spec.help.data(), int(spec.help.size()));
+  if (!spec.ordinary()) {
+    help = QString(toString(spec.group)) + ". " + help;
+    if (!spec.unit.empty())
+      help += " [" + QString::fromUtf8(spec.unit.data(), int(spec.unit.size())) + "]";
+  }
   const double value = spec.defaultValue();
   switch (spec.type) {
     case OptionType::Flag: par.addParam(RichBool(name, value != 0, label, help, extra...)); break;
@@ -109,15 +144,30 @@ void addParameter(RichParameterList &par, const OptionSpec &spec, Extra... extra
   }
 }
 
-/// The core's options from filter `f`'s parameters (its defaults for the rest).
+/// The number a person entered, from the float MeshLab keeps it as: the
+/// shortest decimal that reads back as that float (0.3f gives 0.3, not
+/// 0.30000001192), so a value means what it means on the command line.
+inline double enteredValue(float value) {
+  char text[32];
+  for (int digits = 1; digits <= 9; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, double(value));
+    if (std::strtof(text, nullptr) == value) break;
+  }
+  return std::strtod(text, nullptr);
+}
+
+/// The core's options from filter `f`'s parameters; its defaults for those
+/// the list lacks (a script written before they existed, which MeshLab
+/// 2022.02's GUI passes as it is).
 inline SharpenOptions readOptions(const FilterSpec &f, const RichParameterList &par) {
   SharpenOptions opt;
-  for (const OptionSpec *spec : parametersOf(f)) {
-    const QString name = QString::fromUtf8(spec->meshlabName.data(), int(spec->meshlabName.size()));
+  for (const OptionSpec *spec : parametersOf(f, /*withTuning=*/true)) {
+    const QString name = parameterName(*spec);
+    if (!par.hasParameter(name)) continue;
     switch (spec->type) {
       case OptionType::Flag: spec->set(opt, par.getBool(name) ? 1.0 : 0.0); break;
       case OptionType::Integer: spec->set(opt, par.getInt(name)); break;
-      case OptionType::Real: spec->set(opt, par.getFloat(name)); break;
+      case OptionType::Real: spec->set(opt, enteredValue(float(par.getFloat(name)))); break;
       case OptionType::Choice: spec->set(opt, par.getEnum(name)); break;
     }
   }
@@ -210,6 +260,7 @@ inline FilterOutcome runFilter(const FilterSpec &f, MeshModel &mm, const RichPar
   mm.cm.svn = int(vcg::tri::UpdateSelection<CMeshO>::VertexCount(mm.cm));
   mm.cm.sfn = int(vcg::tri::UpdateSelection<CMeshO>::FaceCount(mm.cm));
   outcome.log.push_back(f.name);
+  outcome.log.push_back("  " + formatVerdictSummary(report));
   for (const std::string &line : lines(formatReport(report))) outcome.log.push_back("  " + line);
   // New vertices take their sources' mean colour (subdivide()); per-wedge
   // texture coordinates are face data, copied from the split face.

@@ -44,7 +44,9 @@ int FilterEdgeSharpenerPlugin::postCondition(QAction *action) const {
 
 void FilterEdgeSharpenerPlugin::initParameterSet(QAction *action, MeshModel &,
                                                  RichParameterList &par) {
-  for (const auto *spec : esm::parametersOf(esm::filterSpec(ID(action))))
+  // The ordinary options only: 2020.09's dialog has no advanced section for
+  // each method's tuning (the CLI and Python have it).
+  for (const auto *spec : esm::parametersOf(esm::filterSpec(ID(action)), /*withTuning=*/false))
     esm::addParameter(par, *spec);
 }
 

@@ -9,13 +9,17 @@ rounding change can be told from a behaviour change.
   scripts/check_identical.py BEFORE_CLI AFTER_CLI [--inputs DIR_OR_FILE ...]
                              [--generated] [--distance MESH_DISTANCE] [--jobs N]
                              [--variants a,b] [--removed-fields PATH,...]
+                             [--added-fields PATH,...]
 
 --generated adds the project's exact shapes resampled by its own marching cubes at 2, 1 and
 0.5% (generate-test-meshes from AFTER's build). Inputs the CLI refuses must be refused by
 both builds. --removed-fields names the report fields (dotted paths: a key or a whole
 object) that AFTER no longer writes: they are left out of the comparison, but BEFORE must
-report them as zero or false on every run ("removed field not zero" otherwise). Exit status
-0 when every output is identical (or refused by both).
+report them as zero or false on every run ("removed field not zero" otherwise).
+--added-fields names the report fields (dotted paths: a key or a whole object) that AFTER
+writes and BEFORE does not: AFTER's report is compared without them (a field BEFORE does
+write still shows as a report difference). Exit status 0 when every output is identical
+(or refused by both).
 """
 import argparse
 import concurrent.futures
@@ -83,8 +87,9 @@ def pop_path(report, path):
 
 
 def compare(job):
-    before_cli, after_cli, mesh, variant, workdir, distance, removed = job
-    stem = f"{os.path.basename(mesh)}.{variant}"
+    before_cli, after_cli, mesh, variant, workdir, distance, removed, added = job
+    # The path's digest too: inputs of the same name from different folders run side by side.
+    stem = f"{hashlib.md5(mesh.encode()).hexdigest()[:8]}.{os.path.basename(mesh)}.{variant}"
     out_a = os.path.join(workdir, stem + ".before.ply")
     out_b = os.path.join(workdir, stem + ".after.ply")
     a, err_a = run(before_cli, mesh, out_a, VARIANTS[variant])
@@ -95,6 +100,8 @@ def compare(job):
         for path in removed:
             if not is_zero(pop_path(a[1], path)):
                 not_zero.append(path)
+            pop_path(b[1], path)
+        for path in added:
             pop_path(b[1], path)
     if a is None or b is None:
         result["status"] = "refused by both" if a is None and b is None else "refused by one"
@@ -151,6 +158,8 @@ def main():
     ap.add_argument("--variants", default=",".join(VARIANTS))
     ap.add_argument("--removed-fields", default="",
                     help="comma-separated dotted report paths AFTER no longer writes")
+    ap.add_argument("--added-fields", default="",
+                    help="comma-separated dotted report paths only AFTER writes")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     args = ap.parse_args()
 
@@ -165,7 +174,8 @@ def main():
             meshes += sorted(glob.glob(os.path.join(gen_dir, "*_mc*.ply")))
         variants = args.variants.split(",")
         removed = [p for p in args.removed_fields.split(",") if p]
-        jobs = [(args.before_cli, args.after_cli, m, v, workdir, args.distance, removed)
+        added = [p for p in args.added_fields.split(",") if p]
+        jobs = [(args.before_cli, args.after_cli, m, v, workdir, args.distance, removed, added)
                 for m in meshes for v in variants]
         counts = {}
         problems = []

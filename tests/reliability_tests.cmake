@@ -3,7 +3,8 @@
 # resolutions; noise (paper, Figure 12); replay of the fuzz corpus and of every
 # fixed crash reproducer (tests/reliability/fuzz_corpus, tests/reliability/crashes).
 # Test names: ctest -R 'Reliability|BadInput|SharpenInvariants|SharpenNoise'. The fuzzers
-# themselves (clang + libFuzzer) are built by scripts/fuzz.sh from fuzz/.
+# themselves (clang + libFuzzer) are built by scripts/fuzz.sh from fuzz/. Also here, as they
+# run the CLI: cli_tests (tests/test_cli.cpp), what the CLI prints (ctest -R '^Cli\.').
 if(TARGET edge-sharpener AND TARGET mesh-distance)
   edge_sharpener_test(reliability_tests
     reliability/test_bad_input.cpp reliability/test_invariants.cpp reliability/test_noise.cpp)
@@ -14,6 +15,14 @@ if(TARGET edge-sharpener AND TARGET mesh-distance)
     EDGE_SHARPENER_CLI="$<TARGET_FILE:edge-sharpener>"
     MESH_DISTANCE_CLI="$<TARGET_FILE:mesh-distance>")
   add_dependencies(reliability_tests edge-sharpener mesh-distance)
+
+  # What the CLI says to a user: --help, --help-all, the default, quiet,
+  # verbose and JSON outputs (test names: ctest -R '^Cli\.').
+  find_package(nlohmann_json 3 REQUIRED)
+  edge_sharpener_test(cli_tests test_cli.cpp)
+  target_link_libraries(cli_tests PRIVATE nlohmann_json::nlohmann_json)
+  target_compile_definitions(cli_tests PRIVATE EDGE_SHARPENER_CLI="$<TARGET_FILE:edge-sharpener>")
+  add_dependencies(cli_tests edge-sharpener)
 endif()
 
 # The fuzz targets' entry points, compiled with the project's compiler and

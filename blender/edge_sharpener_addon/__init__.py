@@ -3,7 +3,8 @@
 Restores the sharp edges and corners that the voxel remesher (or marching
 cubes, or a uniform resampling) cut into chamfers, with the edge_sharpener
 Python package. The operator's redo panel shows the package's ordinary
-options, built from its option table (edge_sharpener.ordinary_options()).
+options, built from its option table (edge_sharpener.ordinary_options()), and
+under a collapsed "Advanced" each method's tuning (tuning_options()), by group.
 """
 
 bl_info = {
@@ -34,8 +35,14 @@ except ImportError:
 
 
 def _property(option):
-    """A Blender property for one row of the option table."""
-    common = {"name": option["label"], "description": option["help"]}
+    """A Blender property for one row of the option table (its label, its help
+    as the tooltip, with the unit). Blender remembers an operator's last values
+    for its next run: the ordinary options' only; a tuning value, out of sight
+    under Advanced, holds for the run it was set in (its redo panel)."""
+    unit = f" [{option['unit']}]" if option["unit"] and option["type"] != "choice" else ""
+    common = {"name": option["label"], "description": option["help"] + unit}
+    if not option["ordinary"]:
+        common["options"] = {"SKIP_SAVE"}
     kind = option["type"]
     if kind == "choice":
         items = [(c, c.capitalize(), "") for c in option["choices"]]
@@ -47,11 +54,40 @@ def _property(option):
         low += 1e-3  # the range excludes its minimum
     if kind == "integer":
         return bpy.props.IntProperty(default=option["default"], min=int(low), max=int(option["max"]), **common)
-    return bpy.props.FloatProperty(default=option["default"], min=low, max=option["max"], **common)
+    # Enough decimals to show the default (0.001, 0.018).
+    decimals = len(repr(float(option["default"])).partition(".")[2].rstrip("0"))
+    return bpy.props.FloatProperty(default=option["default"], min=low, max=option["max"],
+                                   precision=min(6, max(2, decimals)), **common)
 
 
 def _ordinary_options():
     return es.ordinary_options() if es is not None else ()
+
+
+def _tuning_options():
+    return es.tuning_options() if es is not None else ()
+
+
+def _value(option, value):
+    """A property's value as the package takes it: a float property holds a
+    float32, given as the decimal it reads as (0.3, not 0.30000001192)."""
+    if option["type"] == "real":
+        return float(str(np.float32(value)))
+    return value
+
+
+def _options(operator):
+    """sharpen()'s keywords from the operator's properties: the ordinary
+    options, and the tuning that differs from its default in the tuning dict."""
+    options = {o["key"]: _value(o, getattr(operator, o["key"])) for o in _ordinary_options()}
+    tuning = {}
+    for option in _tuning_options():
+        value = _value(option, getattr(operator, option["key"]))
+        if value != option["default"]:
+            tuning[option["key"]] = value
+    if tuning:
+        options["tuning"] = tuning
+    return options
 
 
 def mesh_arrays(mesh):
@@ -214,13 +250,39 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
     bl_label = "Sharpen Chamfered Edges"
     bl_options = {"REGISTER", "UNDO"}
 
-    # One property per ordinary option of the table (set before registering).
-    __annotations__ = {option["key"]: _property(option) for option in _ordinary_options()}
+    # One property per option of the table (set before registering): the
+    # ordinary ones in the panel, each method's tuning under "Advanced".
+    __annotations__ = {option["key"]: _property(option)
+                       for option in _ordinary_options() + _tuning_options()}
+    __annotations__["show_advanced"] = bpy.props.BoolProperty(
+        name="Advanced", default=False, description="Show each method's tuning options")
     # The add-on's own: what it does with the restored edges (mark_sharp_edges).
     __annotations__["mark_sharp"] = bpy.props.BoolProperty(
         name="Mark Sharp", default=True,
         description="Mark the restored edges sharp, so that smooth shading keeps them crisp "
                     "(Blender 3.x: turns on Auto Smooth at 180 degrees on a smooth mesh without it)")
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_split = True
+        layout.use_property_decorate = False
+        for option in _ordinary_options():
+            layout.prop(self, option["key"])
+        layout.prop(self, "mark_sharp")
+        layout.use_property_split = False
+        layout.prop(self, "show_advanced", emboss=False,
+                    icon="TRIA_DOWN" if self.show_advanced else "TRIA_RIGHT")
+        if not self.show_advanced:
+            return
+        box, group = None, None
+        for option in _tuning_options():
+            if option["group"] != group:
+                group = option["group"]
+                box = layout.box()
+                box.use_property_split = True
+                box.use_property_decorate = False
+                box.label(text=group.removeprefix("Tuning: ").capitalize())
+            box.prop(self, option["key"])
 
     @classmethod
     def poll(cls, context):
@@ -237,7 +299,7 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
             bpy.ops.object.mode_set(mode="OBJECT")  # writes the edit mesh to obj.data
         try:
             vertices, faces = mesh_arrays(obj.data)
-            options = {option["key"]: getattr(self, option["key"]) for option in _ordinary_options()}
+            options = _options(self)
             kept = point_colors(obj.data)
             marks = edge_marks(obj.data)
             if kept is not None:
@@ -256,9 +318,7 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
         finally:
             if in_edit_mode:
                 bpy.ops.object.mode_set(mode="EDIT")
-        placement = report["placement"]
-        self.report({"INFO"}, f"Edge-Sharpener: {placement['moved']} vertices moved onto sharp edges "
-                              f"({placement['fallbacks']} kept), {len(faces)} -> {len(new_faces)} triangles"
+        self.report({"INFO"}, f"Edge-Sharpener: {report['summary']}; {len(faces)} -> {len(new_faces)} triangles"
                               + (f", {marked} edges marked sharp" if marked else ""))
         return {"FINISHED"}
 

@@ -43,13 +43,61 @@ es = addon.es
 assert es is not None, "the add-on could not import edge_sharpener"
 print(f"edge_sharpener from {es.__file__}")
 
-# The operator, its menus and its redo panel (the table's ordinary options).
+# The operator, its menus and its redo panel (the table's ordinary options, and
+# each method's tuning under "Advanced", collapsed).
 assert hasattr(bpy.types, "MESH_OT_sharpen_chamfered_edges")
 for menu in ("VIEW3D_MT_edit_mesh_clean", "VIEW3D_MT_object_cleanup"):
     assert addon._menu_entry in getattr(bpy.types, menu).draw._draw_funcs, menu
-panel = {p.identifier for p in bpy.ops.mesh.sharpen_chamfered_edges.get_rna_type().properties
-         if p.identifier != "rna_type"}
-assert panel == {o["key"] for o in es.ordinary_options()} | {"mark_sharp"}, panel
+rna = bpy.ops.mesh.sharpen_chamfered_edges.get_rna_type().properties
+panel = {p.identifier for p in rna if p.identifier != "rna_type"}
+ordinary = {o["key"] for o in es.ordinary_options()}
+tuning = {o["key"] for o in es.tuning_options()}
+assert ordinary and tuning and not ordinary & tuning
+assert panel == ordinary | tuning | {"mark_sharp", "show_advanced"}, panel
+assert not rna["show_advanced"].default
+for option in es.OPTIONS:  # labels and tooltips are the table's
+    assert rna[option["key"]].name == option["label"], option["key"]
+    assert rna[option["key"]].description.startswith(option["help"]), option["key"]
+    if option["type"] in ("real", "integer", "flag"):
+        assert addon._value(option, rna[option["key"]].default) == option["default"], option["key"]
+
+
+class FakeLayout:
+    """What the redo panel's draw() puts in a layout: properties, labels, boxes."""
+    def __init__(self):
+        self.items = []
+
+    def prop(self, data, name, **_):
+        self.items.append(("prop", name))
+
+    def label(self, text):
+        self.items.append(("label", text))
+
+    def box(self):
+        box = FakeLayout()
+        self.items.append(("box", box))
+        return box
+
+
+def drawn(show_advanced):
+    panel = type("Panel", (), {"layout": FakeLayout(), "show_advanced": show_advanced})()
+    addon.MESH_OT_sharpen_chamfered_edges.draw(panel, bpy.context)
+    return panel.layout.items
+
+
+# Collapsed: the ordinary options, Mark Sharp and the Advanced toggle; open: a box
+# per tuning group, titled after it, holding its options in table order.
+closed = drawn(False)
+assert closed == [("prop", o["key"]) for o in es.ordinary_options()] + \
+    [("prop", "mark_sharp"), ("prop", "show_advanced")], closed
+opened = drawn(True)
+assert opened[:len(closed)] == closed
+boxes = [item[1].items for item in opened[len(closed):]]
+groups = list(dict.fromkeys(o["group"] for o in es.tuning_options()))
+assert len(boxes) == len(groups) == 6, boxes
+for box, group in zip(boxes, groups):
+    assert box[0] == ("label", group.removeprefix("Tuning: ").capitalize()), box[0]
+    assert box[1:] == [("prop", o["key"]) for o in es.tuning_options() if o["group"] == group]
 
 
 def new_object(name, vertices, faces):
@@ -166,6 +214,30 @@ assert np.array_equal(after[:n], np.round(paint * 255).astype(int)), "original v
 assert (after[n:, 1] == 100).all() and (after[n:, 2] == 7).all(), "a new vertex is not blended"
 assert after[n:, 0].min() < 60 and after[n:, 0].max() > 190, "the gradient did not come through"
 print(f"point colours: {n} -> {len(mesh.vertices)} vertices, all coloured")
+
+# A tuning option set in the Advanced panel reaches the core: with every feature
+# shorter than the minimum size, each is left as it was, and so is the mesh. It
+# holds for that run only (SKIP_SAVE): the next run has the default again, while
+# an ordinary option (method) is remembered, as Blender does.
+obj = new_object("tuned", cube_vertices, cube_triangles)
+obj.data.remesh_voxel_size = 0.1
+bpy.ops.object.voxel_remesh()
+remeshed = addon.mesh_arrays(bpy.data.objects["tuned"].data)
+assert sharpen(method="auto", min_feature_vertices=1000) == {"FINISHED"}
+tuned = addon.mesh_arrays(bpy.data.objects["tuned"].data)
+assert np.array_equal(tuned[0], remeshed[0]) and len(tuned[1]) == len(remeshed[1]), "a feature was sharpened"
+assert sharpen() == {"FINISHED"}
+assert len(addon.mesh_arrays(bpy.data.objects["tuned"].data)[1]) > len(remeshed[1]), "nothing sharpened"
+print("tuning: min_feature_vertices=1000 left the remeshed cube as it was; the next run sharpened it")
+# Only the tuning that differs from the table's default goes to the package.
+class Probe:
+    pass
+probe = Probe()
+for option in es.OPTIONS:
+    setattr(probe, option["key"], option["default"])
+assert "tuning" not in addon._options(probe)
+probe.max_label_hops, probe.max_bend_fraction = 7, np.float32(0.3)
+assert addon._options(probe)["tuning"] == {"max_label_hops": 7, "max_bend_fraction": 0.3}
 
 # colorize paints the labels into a colour attribute.
 obj = new_object("cube2", cube_vertices, cube_triangles)

@@ -52,12 +52,14 @@ int FilterEdgeSharpenerPlugin::postCondition(const QAction *action) const {
 RichParameterList FilterEdgeSharpenerPlugin::initParameterList(const QAction *action,
                                                                const MeshModel &) {
   RichParameterList par;
-  // The parameters 2020.09 shows; a non-ordinary one (a method's tuning), should
-  // the option table give the filter any, goes behind the dialog's "advanced
-  // parameters" toggle. The `hidden` constructor argument is RichParameter's
-  // isAdvanced.
-  for (const auto *spec : esm::parametersOf(esm::filterSpec(ID(action))))
-    esm::addParameter(par, *spec, /*hidden=*/!spec->ordinary());
+  // The ordinary options, as in 2020.09, then (Sharpen) each method's tuning
+  // as advanced parameters: the dialog shows them under its ▼ toggle ("Show
+  // advanced parameters"); scripts and PyMeshLab set them by name. The
+  // constructor argument after the tooltip is RichParameter's isAdvanced
+  // (RichBool etc. call it `hidden`); no category (a category's title would
+  // stay in sight with its parameters hidden).
+  for (const auto *spec : esm::parametersOf(esm::filterSpec(ID(action)), /*withTuning=*/true))
+    esm::addParameter(par, *spec, /*isAdvanced=*/!spec->ordinary());
   return par;
 }
 

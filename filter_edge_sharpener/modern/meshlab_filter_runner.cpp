@@ -24,6 +24,7 @@ namespace {
 
 const char *kUsage =
     "usage: meshlab-filter-runner [--plugins DIR] [--add-plugin FILE]... --list\n"
+    "       meshlab-filter-runner [--plugins DIR] [--add-plugin FILE]... -i IN --params 'FILTER'\n"
     "       meshlab-filter-runner [--plugins DIR] [--add-plugin FILE]... -i IN [-o OUT]\n"
     "           [--mask vc,fc,vf,ff,vq,fq,vn,wt] [-l LOG] [--save-on-error]\n"
     "           (-s SCRIPT.mlx | -f 'FILTER NAME' [-p name=value]...)\n"
@@ -32,6 +33,8 @@ const char *kUsage =
     "  --add-plugin FILE  one more plugin file to load (e.g. a build of "
     "libfilter_edge_sharpener.so)\n"
     "  --list          print every filter: name, PyMeshLab name, class bits (tab-separated)\n"
+    "  --params NAME   print the filter's parameters for the mesh IN: name, type, 'advanced'\n"
+    "                  (behind the dialog's toggle) or 'shown', label (tab-separated)\n"
     "  -s SCRIPT       apply the filters of a MeshLab .mlx script in order; parameters the\n"
     "                  script omits keep their defaults\n"
     "  -f NAME -p k=v  apply one filter; parameters not given keep their defaults\n"
@@ -40,7 +43,7 @@ const char *kUsage =
     "  --save-on-error save the mesh also when a filter fails (what the failure left)\n";
 
 struct Options {
-  QString pluginsDir, input, output, script, filter, logFile;
+  QString pluginsDir, input, output, script, filter, logFile, paramsOf;
   QStringList extraPlugins, params, mask;
   bool list = false, saveOnError = false;
 };
@@ -160,6 +163,8 @@ bool parseArguments(const QStringList &args, Options &o, std::string &error) {
       o.extraPlugins << next();
     else if (a == "--list")
       o.list = true;
+    else if (a == "--params")
+      o.paramsOf = next();
     else if (a == "-i")
       o.input = next();
     else if (a == "-o")
@@ -183,6 +188,10 @@ bool parseArguments(const QStringList &args, Options &o, std::string &error) {
   if (o.list) return true;
   if (o.input.isEmpty())
     error = "no input mesh (-i)";
+  else if (!o.paramsOf.isEmpty() && (!o.script.isEmpty() || !o.filter.isEmpty()))
+    error = "--params goes without -s and -f";
+  else if (!o.paramsOf.isEmpty())
+    return true;
   else if (o.script.isEmpty() == o.filter.isEmpty())
     error = "give either -s SCRIPT or -f FILTER";
   else if (!o.params.isEmpty() && o.filter.isEmpty())
@@ -250,6 +259,15 @@ int main(int argc, char **argv) {
   int logged = 0;
   try {
     meshlab::loadMeshWithStandardParameters(o.input, md);
+    if (!o.paramsOf.isEmpty()) {
+      QAction *action = pm.filterAction(o.paramsOf);
+      if (action == nullptr) throw MLException("no filter named '" + o.paramsOf + "' is loaded");
+      for (const RichParameter &p :
+           pm.getFilterPluginFromAction(action)->initParameterList(action, md))
+        std::printf("%s\t%s\t%s\t%s\n", qUtf8Printable(p.name()), qUtf8Printable(p.stringType()),
+                    p.isAdvanced() ? "advanced" : "shown", qUtf8Printable(p.fieldDescription()));
+      return 0;
+    }
     if (!o.filter.isEmpty()) {
       QAction *action = pm.filterAction(o.filter);
       if (action == nullptr) throw MLException("no filter named '" + o.filter + "' is loaded");

@@ -246,51 +246,100 @@ py::object pythonValue(const es::OptionSpec &spec, double value) {
   return py::float_(value);
 }
 
-/// The core's options: its defaults, then every keyword given, in table order.
-/// \throws TypeError for an unknown keyword or a value of the wrong kind,
-///         InputError for a value out of range.
-es::SharpenOptions optionsFrom(const py::kwargs &given, const char *function) {
+/// The option's value as the table holds it (choices by index).
+/// \throws TypeError for a value of the wrong kind, InputError for a value out
+///         of range or an unknown choice.
+double optionValue(const es::OptionSpec &spec, const py::object &value) {
+  const std::string key(spec.key);
+  double number = 0;
+  if (spec.type == es::OptionType::Choice) {
+    std::string names;
+    for (std::string_view c : spec.choices)
+      names += (names.empty() ? "'" : ", '") + std::string(c) + "'";
+    if (!py::isinstance<py::str>(value))
+      throw py::type_error("option " + key + " must be one of " + names);
+    const int index = spec.choiceIndex(value.cast<std::string>());
+    if (index < 0)
+      throw es::InputError("option " + key + " has no such choice '" + value.cast<std::string>() +
+                           "' (" + names + ")");
+    number = index;
+  } else {
+    // Strings would convert through float(): refuse them as the wrong kind.
+    if (py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value))
+      throw py::type_error("option " + key + " must be a number, got " +
+                           py::str(value.get_type().attr("__name__")).cast<std::string>());
+    try {
+      number = value.cast<py::float_>().cast<double>();
+    } catch (const py::error_already_set &) {
+      throw py::type_error("option " + key + " must be a number, got " +
+                           py::str(value.get_type().attr("__name__")).cast<std::string>());
+    } catch (const py::cast_error &) {
+      throw py::type_error("option " + key + " must be a number, got " +
+                           py::str(value.get_type().attr("__name__")).cast<std::string>());
+    }
+  }
+  const std::string problem = spec.problemWith(number);
+  if (!problem.empty()) throw es::InputError(problem);
+  return number;
+}
+
+/// The tuning options' keys close to `key` ("; did you mean 'x'?"), or empty.
+std::string closeTuningKeys(const std::string &key) {
+  py::list keys;
+  for (const es::OptionSpec &spec : es::optionTable())
+    if (!spec.ordinary()) keys.append(std::string(spec.key));
+  const py::list close = py::module_::import("difflib").attr("get_close_matches")(key, keys, 2);
+  std::string out;
+  for (const py::handle &c : close)
+    out += (out.empty() ? "; did you mean '" : "' or '") + c.cast<std::string>();
+  return out.empty() ? out : out + "'?";
+}
+
+/// The core's options: its defaults, then the ordinary options given as
+/// keywords and each method's tuning given in the `tuning` mapping (None:
+/// none), in table order.
+/// \throws TypeError for an unknown keyword (a tuning option's names where it
+///         goes), a `tuning` that is no mapping or a value of the wrong kind;
+///         InputError for an unknown or ordinary key in `tuning`, a value out
+///         of range or an unknown choice.
+es::SharpenOptions optionsFrom(const py::kwargs &given, const py::object &tuningArg,
+                               const char *function) {
   for (const auto &item : given) {
     const std::string key = py::str(item.first);
-    if (!es::findOption(key))
+    const es::OptionSpec *spec = es::findOption(key);
+    if (spec && !spec->ordinary())
+      throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + key +
+                           "': a tuning option goes in the tuning dict, tuning={'" + key +
+                           "': ...}");
+    if (!spec)
       throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + key +
                            "'");
+  }
+  py::dict tuning;
+  if (!tuningArg.is_none()) {
+    if (!py::isinstance(tuningArg, py::module_::import("collections.abc").attr("Mapping")))
+      throw py::type_error(
+          "tuning must be a dict of tuning options ({'max_label_hops': 4, ...}), "
+          "got " +
+          py::str(tuningArg.get_type().attr("__name__")).cast<std::string>());
+    tuning = py::dict(tuningArg);
+    for (const auto &item : tuning) {
+      const std::string key = py::str(item.first);
+      const es::OptionSpec *spec =
+          py::isinstance<py::str>(item.first) ? es::findOption(key) : nullptr;
+      if (spec && spec->ordinary())
+        throw es::InputError("'" + key + "' is no tuning option: give it as the keyword argument " +
+                             key + "=...");
+      if (!spec)
+        throw es::InputError("unknown tuning option '" + key + "'" + closeTuningKeys(key) +
+                             " (help(edge_sharpener.sharpen) lists them)");
+    }
   }
   es::SharpenOptions opt;
   for (const es::OptionSpec &spec : es::optionTable()) {
     const std::string key(spec.key);
-    if (!given.contains(key)) continue;
-    const py::object value = given[key.c_str()];
-    double number = 0;
-    if (spec.type == es::OptionType::Choice) {
-      std::string names;
-      for (std::string_view c : spec.choices)
-        names += (names.empty() ? "'" : ", '") + std::string(c) + "'";
-      if (!py::isinstance<py::str>(value))
-        throw py::type_error("option " + key + " must be one of " + names);
-      const int index = spec.choiceIndex(value.cast<std::string>());
-      if (index < 0)
-        throw es::InputError("option " + key + " has no such choice '" + value.cast<std::string>() +
-                             "' (" + names + ")");
-      number = index;
-    } else {
-      // Strings would convert through float(): refuse them as the wrong kind.
-      if (py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value))
-        throw py::type_error("option " + key + " must be a number, got " +
-                             py::str(value.get_type().attr("__name__")).cast<std::string>());
-      try {
-        number = value.cast<py::float_>().cast<double>();
-      } catch (const py::error_already_set &) {
-        throw py::type_error("option " + key + " must be a number, got " +
-                             py::str(value.get_type().attr("__name__")).cast<std::string>());
-      } catch (const py::cast_error &) {
-        throw py::type_error("option " + key + " must be a number, got " +
-                             py::str(value.get_type().attr("__name__")).cast<std::string>());
-      }
-    }
-    const std::string problem = spec.problemWith(number);
-    if (!problem.empty()) throw es::InputError(problem);
-    spec.set(opt, number);
+    const py::dict &source = spec.ordinary() ? static_cast<const py::dict &>(given) : tuning;
+    if (source.contains(key)) spec.set(opt, optionValue(spec, source[key.c_str()]));
   }
   return opt;
 }
@@ -330,12 +379,23 @@ std::string optionDoc(const es::OptionSpec &spec) {
   return s.str();
 }
 
-/// Every option of the table by group, for the docstrings of sharpen() and detect().
+/// Every option of the table by group, for the docstrings of sharpen() and
+/// detect(): the ordinary ones (keyword arguments), then each method's tuning
+/// (the `tuning` dict).
 std::string optionsDoc() {
   std::string doc;
   const char *group = nullptr;
+  bool tuningSaid = false;
   for (const es::OptionSpec &spec : es::optionTable()) {
     if (group != es::toString(spec.group)) {
+      if (!spec.ordinary() && !tuningSaid) {
+        doc += "\n" + wrapped(
+                          "Each method's tuning goes in the tuning dict, e.g. "
+                          "tuning={'max_label_hops': 4, 'min_feature_vertices': 5}; an unknown key "
+                          "raises InputError.",
+                          "");
+        tuningSaid = true;
+      }
       group = es::toString(spec.group);
       doc += std::string("\n") + group + (spec.ordinary() ? " (keyword arguments):\n" : ":\n");
     }
@@ -480,8 +540,8 @@ py::tuple sharpenAs(const py::array &vertices, const py::array &faces, const py:
 
 py::tuple sharpen(const py::object &vertexData, const py::object &faceData,
                   const py::object &progress, const py::object &vertexColors,
-                  const py::kwargs &options) {
-  const es::SharpenOptions opt = optionsFrom(options, "sharpen");
+                  const py::object &tuning, const py::kwargs &options) {
+  const es::SharpenOptions opt = optionsFrom(options, tuning, "sharpen");
   const py::array vertices = asArray(vertexData, "vertices"), faces = asArray(faceData, "faces");
   requireRows3(vertices, "vertices");
   return isFloat32(vertices)
@@ -511,8 +571,8 @@ py::array detectAs(const py::array &vertices, const py::array &faces, const py::
 }
 
 py::array detect(const py::object &vertexData, const py::object &faceData,
-                 const py::object &progress, const py::kwargs &options) {
-  const es::SharpenOptions opt = optionsFrom(options, "detect");
+                 const py::object &progress, const py::object &tuning, const py::kwargs &options) {
+  const es::SharpenOptions opt = optionsFrom(options, tuning, "detect");
   const py::array vertices = asArray(vertexData, "vertices"), faces = asArray(faceData, "faces");
   requireRows3(vertices, "vertices");
   return isFloat32(vertices) ? detectAs<es::Mesh, float>(vertices, faces, progress, opt)
@@ -637,13 +697,13 @@ PYBIND11_MODULE(_edge_sharpener, m) {
           "") +
       wrapped(
           "The caller's arrays are never modified. The GIL is released while the core runs. "
-          "Raises InputError (a ValueError) with the core's message on bad input or an "
-          "option out of range, TypeError on an unknown keyword or a value of the wrong "
-          "kind.",
+          "Raises InputError (a ValueError) with the core's message on bad input, an "
+          "option out of range or an unknown key in `tuning`, TypeError on an unknown keyword "
+          "or a value of the wrong kind.",
           "");
   static const std::string sharpenDoc =
-      "sharpen(vertices, faces, *, progress=None, vertex_colors=None, **options) -> "
-      "(vertices, faces, report)\n\n" +
+      "sharpen(vertices, faces, *, progress=None, vertex_colors=None, tuning=None, **options) "
+      "-> (vertices, faces, report)\n\n" +
       wrapped(
           "Detects chamfers and corners and sharpens them. Original vertices keep their "
           "index (with the paper method also their position: the others move the feature "
@@ -652,7 +712,8 @@ PYBIND11_MODULE(_edge_sharpener, m) {
           "arrays: vertices "
           "(n', 3) of the input's float dtype, faces (m', 3) int64, and `report`, a dict with "
           "the content of the CLI's --json report (each stage's counts, 'options' as used, "
-          "'seconds'); with colorize=True it also holds 'colors': {'faces': (m', 4) uint8 "
+          "'seconds', 'summary': what was restored and left, in one line, as the CLI prints "
+          "it); with colorize=True it also holds 'colors': {'faces': (m', 4) uint8 "
           "RGBA, 'vertices': (n', 4) uint8 RGBA}. vertex_colors, an (n, 3) or (n, 4) array "
           "of integers in [0, 255] or floats in [0, 1], gives the input's colours: the report "
           "then holds 'vertex_colors', (n', 4) uint8 RGBA, each new vertex with the mean "
@@ -664,7 +725,7 @@ PYBIND11_MODULE(_edge_sharpener, m) {
           "") +
       "\n" + arraysDoc + options;
   static const std::string detectDoc =
-      "detect(vertices, faces, *, progress=None, **options) -> labels\n\n" +
+      "detect(vertices, faces, *, progress=None, tuning=None, **options) -> labels\n\n" +
       wrapped(
           "Runs detection only (no geometry change): a uint8 label per face, an index into "
           "FACE_LABELS: 0 other, 1 smooth region, 2 chamfer, 3 corner.",
@@ -687,9 +748,10 @@ PYBIND11_MODULE(_edge_sharpener, m) {
           "");
 
   m.def("sharpen", &sharpen, sharpenDoc.c_str(), py::arg("vertices"), py::arg("faces"),
-        py::kw_only(), py::arg("progress") = py::none(), py::arg("vertex_colors") = py::none());
+        py::kw_only(), py::arg("progress") = py::none(), py::arg("vertex_colors") = py::none(),
+        py::arg("tuning") = py::none());
   m.def("detect", &detect, detectDoc.c_str(), py::arg("vertices"), py::arg("faces"), py::kw_only(),
-        py::arg("progress") = py::none());
+        py::arg("progress") = py::none(), py::arg("tuning") = py::none());
   m.def("mesh_distance", &meshDistance, distanceDoc.c_str(), py::arg("a_vertices"),
         py::arg("a_faces"), py::arg("b_vertices"), py::arg("b_faces"), py::kw_only(),
         py::arg("samples") = 200000, py::arg("seed") = py::none(),

@@ -32,6 +32,18 @@ def cli_arguments(options):
     return args
 
 
+def split_options(options):
+    """`options` (key -> value, any option of the table) as the package takes them:
+    the ordinary ones as keywords, each method's tuning in the `tuning` dict."""
+    import edge_sharpener as es
+    tuning_keys = {o["key"] for o in es.tuning_options()}
+    keywords = {k: v for k, v in options.items() if k not in tuning_keys}
+    tuning = {k: v for k, v in options.items() if k in tuning_keys}
+    if tuning:
+        keywords["tuning"] = tuning
+    return keywords
+
+
 def run_cli(input_path, output_path, options, detect_only=False):
     """Runs the edge-sharpener CLI; returns its --json report."""
     command = [CLI, str(input_path), str(output_path), "--json", *cli_arguments(options)]

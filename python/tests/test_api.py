@@ -86,12 +86,45 @@ def test_options_come_from_the_table():
     for option in es.OPTIONS:  # defaults: the report's options record the table's defaults
         assert report["options"][option["key"]] == option["default"], option["key"]
         assert option["key"] in es.sharpen.__doc__ and option["key"] in es.detect.__doc__
+    # The ordinary options are keywords, the others each method's tuning.
+    assert [o["key"] for o in es.tuning_options()] == keys[5:]
+    assert all(o["group"].startswith("Tuning: ") for o in es.tuning_options())
     # Every option can be given; the values come back in the report.
     _, _, report = es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F, method="extended", multiplier=1.5,
-                              support_rings=3, degenerate_angle_deg=2, open_region_contacts=False)
+                              degenerate_angle_deg=2,
+                              tuning={"support_rings": 3, "open_region_contacts": False})
     assert report["options"]["multiplier"] == 1.5 and report["options"]["support_rings"] == 3
     assert report["options"]["degenerate_angle_deg"] == 2 and report["options"]["method"] == "extended"
     assert report["options"]["open_region_contacts"] is False
+    # The docstrings say where each kind goes.
+    for function in (es.sharpen, es.detect):
+        doc = function.__doc__
+        assert "tuning=None, **options" in doc and "tuning={'max_label_hops': 4" in doc
+        assert doc.index("(keyword arguments):") < doc.index("tuning={") < doc.index("Tuning: ")
+
+
+def test_tuning_dict_reaches_the_core(cube):
+    # The default restores the cube's features; with every feature shorter than
+    # the minimum size, each is left as it was, and so is the mesh.
+    default_vertices, _, default = es.sharpen(*cube)
+    assert default["evidence"]["verdicts"]["restored"] == default["evidence"]["features"] > 0
+    vertices, faces, report = es.sharpen(*cube, tuning={"min_feature_vertices": 1000})
+    assert report["options"]["min_feature_vertices"] == 1000
+    verdicts = report["evidence"]["verdicts"]
+    assert verdicts["restored"] == 0 and verdicts["too_short"] > 0
+    assert sum(verdicts.values()) == report["evidence"]["features"]
+    assert len(faces) == len(cube[1]) and np.array_equal(vertices, cube[0])
+    assert report["summary"].startswith(f"features: 0 restored, {report['evidence']['features']} left")
+    assert f"{verdicts['too_short']} too short" in report["summary"]
+    # Any mapping works; an empty one or None is the defaults.
+    import types
+    mapping = types.MappingProxyType({"min_feature_vertices": 1000})
+    assert np.array_equal(es.sharpen(*cube, tuning=mapping)[1], faces)
+    for empty in ({}, None):
+        assert np.array_equal(es.sharpen(*cube, tuning=empty)[0], default_vertices)
+    # detect() takes the same dict (the extended method's detection tuning).
+    assert not np.array_equal(es.detect(*cube, method="extended"),
+                              es.detect(*cube, method="extended", tuning={"min_region_depth": 100}))
 
 
 def test_colorize_returns_colors(cube):
@@ -242,8 +275,20 @@ BAD_OPTIONS = [
     ({"multiplier": -1.0}, es.InputError, "option multiplier must be in"),
     ({"multiplier": float("nan")}, es.InputError, "must be a finite number"),
     ({"degenerate_angle_deg": 60}, es.InputError, "option degenerate_angle_deg must be in \\[0, 59\\] deg"),
-    ({"support_rings": 2.5}, es.InputError, "support_rings must be a whole number"),
-    ({"support_rings": 0}, es.InputError, "support_rings must be in \\[1, 20\\]"),
+    ({"tuning": {"support_rings": 2.5}}, es.InputError, "support_rings must be a whole number"),
+    ({"tuning": {"support_rings": 0}}, es.InputError, "support_rings must be in \\[1, 20\\]"),
+    ({"tuning": {"support_rings": "3"}}, TypeError, "support_rings must be a number, got str"),
+    ({"tuning": {"region_planes": 2}}, es.InputError, "region_planes must be true or false"),
+    ({"tuning": {"nonsense": 1}}, es.InputError, "unknown tuning option 'nonsense' \\(help"),
+    ({"tuning": {"max_label_hop": 4}}, es.InputError,
+     "unknown tuning option 'max_label_hop'; did you mean 'max_label_hops'"),
+    ({"tuning": {1: 4}}, es.InputError, "unknown tuning option '1'"),
+    ({"tuning": {"multiplier": 2}}, es.InputError,
+     "'multiplier' is no tuning option: give it as the keyword argument multiplier="),
+    ({"tuning": [("support_rings", 3)]}, TypeError, "tuning must be a dict of tuning options"),
+    ({"tuning": 3}, TypeError, "tuning must be a dict of tuning options .* got int"),
+    ({"max_label_hops": 4}, TypeError,
+     "unexpected keyword argument 'max_label_hops': a tuning option goes in the tuning dict"),
     ({"colorize": 2}, es.InputError, "colorize must be true or false"),
     ({"method": "best"}, es.InputError, "method has no such choice 'best' \\('paper', 'extended', 'auto'\\)"),
     ({"method": 1}, TypeError, "method must be one of 'paper', 'extended', 'auto'"),

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import edge_sharpener as es
-from conftest import DISTANCE_CLI, SAMPLES, run_cli, sample
+from conftest import DISTANCE_CLI, SAMPLES, run_cli, sample, split_options
 from ply import read_ply
 
 MESHES = ["cube_mc2", "lblock_mc2", "pyramid_mc2"]
@@ -30,7 +30,7 @@ def test_sharpen_matches_cli(name, options, cli, tmp_path):
     cli_report = run_cli(SAMPLES / f"{name}.ply", tmp_path / "out.ply", options)
     cli_out = read_ply(tmp_path / "out.ply")
 
-    vertices, faces, report = es.sharpen(mesh["vertices"], mesh["faces"], **options)
+    vertices, faces, report = es.sharpen(mesh["vertices"], mesh["faces"], **split_options(options))
 
     assert vertices.dtype == np.float32 and faces.dtype == np.int64
     assert np.array_equal(vertices, cli_out["vertices"])

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 import edge_sharpener as es
+from conftest import split_options
 
 CASES = 4200
 SEED = 20260522
@@ -104,7 +105,7 @@ def test_random_arrays(chunk):
     outcomes = {"sharpened": 0, "detected": 0, "measured": 0, "refused": 0}
     for _ in range(CASES // 6):
         vertices, faces = random_case(rng)
-        options = random_options(rng) if rng.random() < 0.5 else {}
+        options = split_options(random_options(rng)) if rng.random() < 0.5 else {}
         copies = (vertices.copy(), faces.copy())
         function = rng.choice(["sharpen", "detect", "mesh_distance"], p=[0.75, 0.15, 0.1])
         try:

@@ -3,7 +3,10 @@
 # Sharpen (sharpen.mlx: plain, with colours, the extended method)
 # and Detect (detect.mlx, paints and selects) on the generated marching-cubes
 # meshes and on an L-block resampled by stock 2022.02 Uniform Mesh Resampling.
-# Compared: vertices, faces, face and vertex colours, selected faces.
+# Compared: vertices, faces, face and vertex colours, selected faces. Then each
+# method's tuning: Sharpen's advanced parameters (every tuning option of the
+# CLI's --help-all, by the name of its key in camelCase; Detect has none), set
+# with -p, give what the CLI's tuning flags give.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [[ -x ${ES_CLI:-} ]] || fail "the edge-sharpener CLI is not built (ES_CLI='${ES_CLI:-}')"
 
@@ -59,3 +62,44 @@ for in in "${inputs[@]}"; do
   log "$n: MeshLab 2022.02 == CLI (sharpen $in_faces -> $out_faces faces, $colours face colours," \
     "extended method, detect $selected faces selected)"
 done
+
+# The tuning options: advanced parameters of Sharpen, named after their keys in camelCase.
+FILTER="Edge-Sharpener: Sharpen Chamfered Edges"
+in=${inputs[0]}
+in_trixie "$RUNNER" --add-plugin "$PLUGIN" -i "$in" --params "$FILTER" >params.txt 2>params.err ||
+  { cat params.err >&2; fail "runner --params failed"; }
+in_trixie "$RUNNER" --add-plugin "$PLUGIN" -i "$in" --params "Edge-Sharpener: Detect Chamfers" \
+  >detect_params.txt 2>>params.err || { cat params.err >&2; fail "runner --params (Detect) failed"; }
+shown=$(awk -F'\t' '$3 == "shown" {print $1}' params.txt | tr '\n' ' ')
+[[ $shown == "method smoothMultiplier edgeLengthCheck colorize degenerateAngleDeg " ]] ||
+  fail "Sharpen's shown parameters: '$shown'"
+! grep -q $'\tadvanced\t' detect_params.txt || fail "Detect has advanced parameters"
+"$ES_CLI" --help-all >help_all.txt
+# The flags listed under the "Tuning: ..." group titles of --help-all.
+tuning_flags=$(awk '/^[^ ].*:$/ { tuning = /^Tuning: / } tuning && /^  --/' help_all.txt | wc -l)
+advanced=$(grep -c $'\tadvanced\t' params.txt)
+((tuning_flags > 20 && advanced == tuning_flags)) ||
+  fail "$advanced advanced parameters, the CLI has $tuning_flags tuning flags"
+grep -qP '^maxLabelHops\tRichInt\tadvanced\tMaximum label distance$' params.txt &&
+  grep -qP '^flattenRoughPlanes\tRichBool\tadvanced\t' params.txt &&
+  grep -qP '^exactSamplingSpacings\tRichFloat\tadvanced\t' params.txt ||
+  { cat params.txt; fail "tuning parameters missing or misnamed"; }
+log "Sharpen: $advanced advanced (tuning) parameters, 5 shown; Detect: none advanced"
+
+# A tuning value reaches the core as the CLI's flag does (one of each kind).
+tuned() {
+  local name=$1 param=$2
+  shift 2
+  run_filter "$name" -i "$in" -o "$ES_WORK_DIR/$name.plugin.ply" --mask vc,fc,ff -f "$FILTER" -p "$param"
+  ((rc == 0)) || { cat "$name.out" >&2; fail "$name: runner status $rc"; }
+  same "$name" "$in" "$@" -- --rel-tol 1e-5
+}
+tuned tuned_int "minFeatureVertices=1000" --min-feature-vertices 1000
+tuned tuned_real "maxFeatureOffPlaneSpacings=0.3" --feature-off-plane 0.3
+tuned tuned_flag "regionPlanes=false" --local-planes-only
+in_faces=$("$ES_TEST_TOOL" info "$in" | sed -n 's/^faces=//p')
+out_faces=$("$ES_TEST_TOOL" info tuned_int.plugin.ply | sed -n 's/^faces=//p')
+((out_faces == in_faces)) || fail "minFeatureVertices=1000 did not leave every feature ($in_faces -> $out_faces faces)"
+grep -q 'LOG: .*features: 0 restored, [0-9]* left as they were: [0-9]* too short' tuned_int.out ||
+  { cat tuned_int.out >&2; fail "the log does not say why the features were left"; }
+log "tuning parameters (integer, real, flag) give the CLI's results; the log names the verdicts"

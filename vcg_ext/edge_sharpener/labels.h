@@ -120,7 +120,7 @@ inline const char *describe(Verdict v) {
     case Verdict::LineAcrossChamfer: return "planes meet across it";
     case Verdict::OffItsPlanes: return "off its planes";
     case Verdict::MostlyRefused: return "mostly refused";
-    case Verdict::CornerOfWeakEdge: return "corner of a weak edge";
+    case Verdict::CornerOfWeakEdge: return "at a corner of a weak edge";
     case Verdict::AlreadySharp: return "already sharp";
   }
   return "unknown";

@@ -20,15 +20,28 @@ namespace edge_sharpener {
 enum class OptionType { Flag, Integer, Real, Choice };
 
 /// Who sets the option. `Ordinary` options are what users see first (CLI
-/// help, MeshLab dialog, Blender panel); the others are one method's tuning.
-enum class OptionGroup { Ordinary, PaperTuning, ExtendedTuning, EvidenceGuard };
+/// help, MeshLab dialog, Blender panel); the others are tuning, one group per
+/// settings struct of the rulebook (rulebook.h), the auto method's by the
+/// decision they make.
+enum class OptionGroup {
+  Ordinary,
+  Paper,           ///< SharpenOptions::paper
+  Extended,        ///< SharpenOptions::extended
+  AutoWholeMesh,   ///< SharpenOptions::rules.mesh
+  AutoFeature,     ///< SharpenOptions::rules.feature
+  AutoVertex,      ///< SharpenOptions::rules.vertex
+  AutoRoughInput,  ///< SharpenOptions::rules.rough
+};
 
 inline const char *toString(OptionGroup g) {
   switch (g) {
     case OptionGroup::Ordinary: return "Options";
-    case OptionGroup::PaperTuning: return "Paper method tuning";
-    case OptionGroup::ExtendedTuning: return "Extended method tuning";
-    case OptionGroup::EvidenceGuard: return "Auto method: evidence guard";
+    case OptionGroup::Paper: return "Tuning: the paper's degenerate cases";
+    case OptionGroup::Extended: return "Tuning: extended and auto methods, detection and placement";
+    case OptionGroup::AutoWholeMesh: return "Tuning: auto method, the whole mesh";
+    case OptionGroup::AutoFeature: return "Tuning: auto method, each feature";
+    case OptionGroup::AutoVertex: return "Tuning: auto method, each new vertex";
+    case OptionGroup::AutoRoughInput: return "Tuning: auto method, a rough input";
   }
   return "";
 }
@@ -104,13 +117,10 @@ inline const std::vector<OptionSpec> &optionTable() {
   static const std::vector<OptionSpec> table{
       // ----- what users set
       {"method", "--method", "method", "Method",
-       "auto (the default): the extended method, keeping only the features whose evidence is "
-       "strong (their placement tests agree and their samples lie on the planes fitted beside "
-       "them) and leaving the mesh as it is when most of them are weak (a depth scan, a model "
-       "already sharp); paper: the 2003 method exactly as published (chamfers one triangle "
-       "wide); extended: smooth regions are segmented and the feature zone between them may "
-       "be of any width (marching-cubes bands, corner patches); zone vertices move onto their "
-       "region's fitted plane, never the vertices of smooth regions.",
+       "auto (the default): the extended method, sharpening only the features with strong "
+       "evidence, the mesh left as it is when most are weak (a scan, a model already sharp); "
+       "extended: chamfer zones of any width, every feature sharpened; paper: the 2003 method "
+       "as published (chamfers one triangle wide).",
        T::Choice, G::Ordinary, "", 0, 2, false, kBoth,
        {"paper", "extended", "auto"},
        {"Paper (2003)", "Extended (feature zones)", "Auto (extended, on strong evidence only)"},
@@ -141,247 +151,238 @@ inline const std::vector<OptionSpec> &optionTable() {
        "Keep a new vertex unmoved when its chamfer is bordered by a concave edge on one side "
        "and a convex edge on the other (paper, section 3). Paper and extended methods: auto "
        "judges these moves by its own tests (a saddle corner's are sound).",
-       T::Flag, G::PaperTuning, "", 0, 1, false, kNotInMeshLab, {}, {}, ES_FLAG(convexityCheck)},
+       T::Flag, G::Paper, "", 0, 1, false, kNotInMeshLab, {}, {}, ES_FLAG(paper.convexityCheck)},
       {"parallel_angle_deg", "--parallel-angle", "", "Parallel-plane tolerance",
        "Two planes whose normals are closer than this angle count as parallel; three normals "
        "whose triple product is below its sine count as coplanar.",
-       T::Real, G::PaperTuning, "deg", 0, 89, false, kNotInMeshLab, {}, {},
-       ES_ANGLE(parallelAngleRad)},
-      // ----- extended method
+       T::Real, G::Paper, "deg", 0, 89, false, kNotInMeshLab, {}, {},
+       ES_ANGLE(paper.parallelAngleRad)},
+      // ----- extended method: detection and placement (extended and auto)
       {"min_region_depth", "--min-region-depth", "", "Minimum region depth",
        "A smooth region whose vertices all lie fewer than this many hops from its border is a "
        "corridor (a regular chamfer band) and joins the feature zone.",
-       T::Integer, G::ExtendedTuning, "hops", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_INT(minRegionDepth)},
+       T::Integer, G::Extended, "hops", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_INT(extended.minRegionDepth)},
       {"open_region_contacts", "--keep-contacts", "", "Open region contacts",
        "Return to the feature zone the region faces around vertices where two smooth regions "
        "touch.",
-       T::Flag, G::ExtendedTuning, "", 0, 1, false, kNotInMeshLab, {}, {},
-       ES_FLAG(openRegionContacts)},
+       T::Flag, G::Extended, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_FLAG(extended.openRegionContacts)},
       {"min_facet_length_spacings", "--min-facet-length", "", "Narrow facet length",
        "...except the faces of a region that opening would leave without an interior vertex "
        "and that spans at least this many sample spacings: a narrow facet (of a coarse "
        "cylinder), not a smooth piece of a chamfer (0: such regions open too).",
-       T::Real, G::ExtendedTuning, "sample spacings", 0, 1e6, false, kNotInMeshLab, {}, {},
-       ES_REAL(minFacetLengthSpacings)},
+       T::Real, G::Extended, "sample spacings", 0, 1e6, false, kNotInMeshLab, {}, {},
+       ES_REAL(extended.minFacetLengthSpacings)},
       {"region_planes", "--local-planes-only", "", "Planar regions' own planes",
        "Place a feature's new vertices on its flanks' own planes where their regions are planes "
        "away from their features (fitted over their cores), up to a corner whose third face is "
        "a plane too: a reconstruction rounds the planes fitted next to the feature.",
-       T::Flag, G::ExtendedTuning, "", 0, 1, false, kNotInMeshLab, {}, {},
-       ES_FLAG(regionPlanes)},
+       T::Flag, G::Extended, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_FLAG(extended.regionPlanes)},
       {"open_internal_creases", "--keep-internal-creases", "", "Open internal creases",
        "Return to the feature zone the region faces around internal creases (a non-smooth edge "
        "inside one region).",
-       T::Flag, G::ExtendedTuning, "", 0, 1, false, kNotInMeshLab, {}, {},
-       ES_FLAG(openInternalCreases)},
+       T::Flag, G::Extended, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_FLAG(extended.openInternalCreases)},
       {"internal_crease_angle_deg", "--internal-crease-angle", "", "Internal crease angle",
        "An internal crease turns its face normals by more than this angle; below it, a "
        "non-smooth edge inside a region is marching-cubes noise.",
-       T::Real, G::ExtendedTuning, "deg", 0, 180, false, kNotInMeshLab, {}, {},
-       ES_ANGLE(internalCreaseAngleRad)},
+       T::Real, G::Extended, "deg", 0, 180, false, kNotInMeshLab, {}, {},
+       ES_ANGLE(extended.internalCreaseAngleRad)},
       {"internal_crease_threshold_factor", "--internal-crease-factor", "", "Internal crease factor",
        "...and by more than this multiple of the smooth-edge threshold (a coarse sampling of a "
        "curved surface has large angles everywhere).",
-       T::Real, G::ExtendedTuning, "x smooth threshold", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(internalCreaseThresholdFactor)},
+       T::Real, G::Extended, "x smooth threshold", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(extended.internalCreaseThresholdFactor)},
       {"same_region_feature_angle_deg", "--same-region-angle", "", "Same-region feature angle",
        "Two vertices of one region whose planes turn by more than this angle lie on different "
        "surfaces: a chamfer edge may join them (0: one region is one surface).",
-       T::Real, G::ExtendedTuning, "deg", 0, 180, false, kNotInMeshLab, {}, {},
-       ES_ANGLE(sameRegionFeatureAngleRad)},
+       T::Real, G::Extended, "deg", 0, 180, false, kNotInMeshLab, {}, {},
+       ES_ANGLE(extended.sameRegionFeatureAngleRad)},
       {"support_rings", "--support-rings", "", "Support rings",
        "Face rings around a region's border vertex used to fit its plane.",
-       T::Integer, G::ExtendedTuning, "rings", 1, 20, false, kNotInMeshLab, {}, {},
-       ES_INT(supportRings)},
+       T::Integer, G::Extended, "rings", 1, 20, false, kNotInMeshLab, {}, {},
+       ES_INT(extended.supportRings)},
       {"label_slack_hops", "--label-slack", "", "Label slack",
        "A zone vertex considers the regions reaching it within this many hops of the closest "
        "one.",
-       T::Integer, G::ExtendedTuning, "hops", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_INT(labelSlackHops)},
+       T::Integer, G::Extended, "hops", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_INT(extended.labelSlackHops)},
       {"max_label_hops", "--max-label-hops", "", "Maximum label distance",
        "A zone vertex takes region labels from at most this many hops away: a region's plane "
        "extrapolated farther misses a curved surface.",
-       T::Integer, G::ExtendedTuning, "hops", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_INT(maxLabelHops)},
+       T::Integer, G::Extended, "hops", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_INT(extended.maxLabelHops)},
       {"max_projection_factor", "--max-projection", "", "Maximum projection",
        "Longest move of a zone vertex onto its region's plane, in mean edge lengths (0: "
        "never).",
-       T::Real, G::ExtendedTuning, "mean edge lengths", 0, 10, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxProjectionFactor)},
+       T::Real, G::Extended, "mean edge lengths", 0, 10, false, kNotInMeshLab, {}, {},
+       ES_REAL(extended.maxProjectionFactor)},
       {"extended_edge_length_factor", "--length-factor", "", "Edge-length factor",
        "The edge-length check allows this multiple of the longest input edge (the tip of an "
        "acute edge lies well beyond its chamfer).",
-       T::Real, G::ExtendedTuning, "x longest edge", 1, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(extendedEdgeLengthFactor)},
+       T::Real, G::Extended, "x longest edge", 1, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(extended.extendedEdgeLengthFactor)},
       {"max_displacement_spacings", "--max-displacement", "", "Maximum displacement",
        "Keep a vertex at rest when the planes meet farther than this many median edge lengths "
        "from it (0: off).",
-       T::Real, G::ExtendedTuning, "median edge lengths", 0, 1000, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxDisplacementSpacings)},
+       T::Real, G::Extended, "median edge lengths", 0, 1000, false, kNotInMeshLab, {}, {},
+       ES_REAL(extended.maxDisplacementSpacings)},
       {"apex_height_factor", "--apex-factor", "", "Apex factor",
        "Keep a vertex at rest when the planes meet this many times higher above its chamfer "
        "than their angle allows (0: off).",
-       T::Real, G::ExtendedTuning, "", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(apexHeightFactor)},
+       T::Real, G::Extended, "", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(extended.apexHeightFactor)},
       {"max_support_spread_ratio", "--spread-ratio", "", "Spread ratio",
        "Keep a vertex at rest when its regions turn, over the fitted neighbourhood, by more "
        "than this fraction of the angle between their planes (a blend; 0: off).",
-       T::Real, G::ExtendedTuning, "", 0, 10, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxSupportSpreadRatio)},
+       T::Real, G::Extended, "", 0, 10, false, kNotInMeshLab, {}, {},
+       ES_REAL(extended.maxSupportSpreadRatio)},
       {"intermediate_plane_tolerance", "--intermediate-tolerance", "",
        "Intermediate-plane tolerance",
        "Keep a vertex at rest when it would pass through the plane of a third region whose "
        "normal lies between the flanks' by more than this fraction of its displacement "
        "(negative: off).",
-       T::Real, G::ExtendedTuning, "", -1, 10, false, kNotInMeshLab, {}, {},
-       ES_REAL(intermediatePlaneTolerance)},
+       T::Real, G::Extended, "", -1, 10, false, kNotInMeshLab, {}, {},
+       ES_REAL(extended.intermediatePlaneTolerance)},
       {"max_bend_fraction", "--bend-fraction", "", "Bend fraction",
        "Keep a vertex at rest when a flank's region, bending across the feature, would leave "
        "its plane by more than this fraction of the vertex's displacement (negative: off).",
-       T::Real, G::ExtendedTuning, "", -1, 10, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxBendFraction)},
+       T::Real, G::Extended, "", -1, 10, false, kNotInMeshLab, {}, {},
+       ES_REAL(extended.maxBendFraction)},
       {"min_bend_spread_deg", "--bend-spread", "", "Bend spread",
        "...tested where the fitted faces spread by at least this angle.",
-       T::Real, G::ExtendedTuning, "deg", 0, 180, false, kNotInMeshLab, {}, {},
-       ES_ANGLE(minBendSpreadRad)},
+       T::Real, G::Extended, "deg", 0, 180, false, kNotInMeshLab, {}, {},
+       ES_ANGLE(extended.minBendSpreadRad)},
       {"min_bend_fit_quality", "--bend-fit-quality", "", "Bend fit quality",
        "...or where the fitted faces' normals follow their position this well (0 to 1).",
-       T::Real, G::ExtendedTuning, "", 0, 1, false, kNotInMeshLab, {}, {},
-       ES_REAL(minBendFitQuality)},
+       T::Real, G::Extended, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_REAL(extended.minBendFitQuality)},
       {"intermediate_slack_deg", "--intermediate-slack", "", "Intermediate slack",
        "How far a third region's normal may lie off the arc between the flanks' normals and "
        "still count as between them.",
-       T::Real, G::ExtendedTuning, "deg", 0, 180, false, kNotInMeshLab, {}, {},
-       ES_ANGLE(intermediateSlackRad)},
+       T::Real, G::Extended, "deg", 0, 180, false, kNotInMeshLab, {}, {},
+       ES_ANGLE(extended.intermediateSlackRad)},
       {"fit_trim_angle_deg", "--fit-trim-angle", "", "Fit trim angle",
        "A region's plane is refitted without its faces turned more than this from the first "
        "fit (0: no refit).",
-       T::Real, G::ExtendedTuning, "deg", 0, 180, false, kNotInMeshLab, {}, {},
-       ES_ANGLE(fitTrimAngleRad)},
-      // ----- auto method: the evidence guard
+       T::Real, G::Extended, "deg", 0, 180, false, kNotInMeshLab, {}, {},
+       ES_ANGLE(extended.fitTrimAngleRad)},
+      // ----- auto method: the whole mesh
       {"max_refused_fraction", "--max-refused", "", "Refused fraction",
        "Auto method: nothing is sharpened when the other tests kept at rest more than this "
        "fraction of the new vertices of the features that moved at all (the input is not a "
        "chamfered sampling of sharp edges: a scan, a model already sharp, a smooth shape).",
-       T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxRefusedFraction)},
+       T::Real, G::AutoWholeMesh, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.mesh.maxRefusedFraction)},
       {"max_refused_fraction_smooth", "--max-refused-smooth", "", "Refused fraction, smooth",
        "Auto method: the refused fraction's bound on a smooth part made of planes (see "
        "--smooth-noise and --min-planar-area), where refusals come from the shape and the "
        "per-feature evidence judges each feature.",
-       T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxRefusedFractionSmooth)},
+       T::Real, G::AutoWholeMesh, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.mesh.maxRefusedFractionSmooth)},
       {"max_smooth_noise_spacings", "--smooth-noise", "", "Smooth surface noise",
        "Auto method: a surface counts as smooth when the median change of its vertices' "
        "umbrella curvature from their neighbours' is at most this (a remeshed or reconstructed "
        "solid; a fused scan is rougher; 0: no surface counts as smooth).",
-       T::Real, G::EvidenceGuard, "median edge lengths", 0, 10, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxSmoothNoiseSpacings)},
+       T::Real, G::AutoWholeMesh, "median edge lengths", 0, 10, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.mesh.maxSmoothNoiseSpacings)},
       {"min_planar_area_fraction", "--min-planar-area", "", "Minimum planar area",
        "Auto method: the share of the surface that must lie on planes (faces within 3 degrees "
        "of their smooth region's mean normal) for the smooth bound to apply.",
-       T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
-       ES_REAL(minPlanarAreaFraction)},
-      {"flatten_rough_planes", "--keep-rough-planes", "", "Flatten a rough input's planes",
-       "Auto method: on a rough input (a fused scan; see --smooth-noise) left whole for weak "
-       "evidence, the vertices of each region that is a plane in its core, and the feature "
-       "zone's vertices labelled with it, that lie outside that plane by at most two sample "
-       "spacings move onto it where that place is on the region's face: a scan's fusion "
-       "bulges its planes outwards beside each edge. Beside a convex edge or corner, a vertex "
-       "that bulges beyond the other face's plane too, or belongs to no planar region, moves "
-       "to the nearest point behind the planes around it. Where that moved at least 1% of "
-       "the vertices, the same again on planes grown face by face (each face of the solid, "
-       "which the segmentation may merge across a rounded edge, kept only beside another "
-       "plane meeting it at --min-feature-angle). Off with --local-planes-only too.",
-       T::Flag, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
-       ES_FLAG(flattenRoughPlanes)},
+       T::Real, G::AutoWholeMesh, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.mesh.minPlanarAreaFraction)},
       {"min_median_lift", "--min-lift", "", "Minimum median lift",
-       "Auto method: nothing is sharpened when the moves mostly slide along the input's surface "
-       "instead of lifting it to sharp edges: the median distance of the new vertices' targets "
-       "from the input faces around them is below this fraction of the moves' length (a model "
-       "already sharp, whose curved faces sliding would only bend; 0: off). On a mesh sampled "
-       "exactly on its surface, only the features whose own moves slide are left: its sampler "
-       "may leave some edges sharp and others chamfered.",
-       T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
-       ES_REAL(minMedianLift)},
+       "Auto method: nothing is sharpened when the moves mostly slide along the input: their "
+       "targets' median distance from the input faces around them is below this fraction of "
+       "their length (a model already sharp; 0: off). On a mesh sampled exactly, only the "
+       "features whose own moves slide are left.",
+       T::Real, G::AutoWholeMesh, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.mesh.minMedianLift)},
+      {"exact_sampling_spacings", "--exact-sampling", "", "Exact sampling tolerance",
+       "Auto method: a mesh whose median feature has nine in ten of its vertices within this "
+       "distance of their planes is sampled exactly (Blender's voxel remesh with Preserve "
+       "Volume): there a feature with half of its vertices beyond --on-plane (a designed "
+       "bevel) stays as it was, as do the new vertices of such far ones (0: off).",
+       T::Real, G::AutoWholeMesh, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.mesh.exactSamplingSpacings)},
+      // ----- auto method: each feature
       {"max_feature_fallback_fraction", "--feature-fallback", "", "Feature fallback fraction",
        "Auto method: a feature (a chamfer strip with its corners) stays as it was when more "
        "than this fraction of its new vertices were kept at rest by the other tests or would "
        "move nearer another sheet of the surface (a thin wall's other side) than their own "
        "(the default: most of them).",
-       T::Real, G::EvidenceGuard, "", 0, 1, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxFeatureFallbackFraction)},
-      {"max_bent_move_spacings", "--bent-move", "", "Move across a bend",
-       "Auto method: a new vertex the bend test (--bend-fraction) would keep at rest moves, "
-       "when its move is at most this long and nothing else refuses it, with its feature if "
-       "the feature's evidence is strong; it counts as refused in that evidence (a sampler "
-       "rounds a sharp edge most near its corners, by about one median edge length; 0: the "
-       "bend keeps it at rest, as in the extended method).",
-       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxBentMoveSpacings)},
+       T::Real, G::AutoFeature, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.feature.maxFeatureFallbackFraction)},
       {"max_feature_off_plane_spacings", "--feature-off-plane", "", "Feature off-plane distance",
        "Auto method: a feature stays as it was when one of its vertices lies farther than this "
        "from the plane fitted to its flank: a blend, a curved face or a thin wall meets it.",
-       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxFeatureOffPlaneSpacings)},
+       T::Real, G::AutoFeature, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.feature.maxFeatureOffPlaneSpacings)},
       {"on_plane_spacings", "--on-plane", "", "On-plane tolerance",
        "Auto method: ...unless nine in ten of the feature's vertices lie within this distance of "
        "their planes (an exactly sampled feature whose far vertices lie where it meets another "
        "part: the new vertices they source stay at rest; 0: every far vertex counts).",
-       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(onPlaneSpacings)},
-      {"exact_sampling_spacings", "--exact-sampling", "", "Exact sampling tolerance",
-       "Auto method: a mesh whose median feature has nine in ten of its vertices within this "
-       "distance of their planes is sampled exactly on its surface (a remesher that casts its "
-       "vertices onto the input: Blender's voxel remesh with Preserve Volume); there a vertex "
-       "farther than --on-plane from its plane is the surface itself (a designed bevel or "
-       "blend): a feature with half of its vertices that far stays as it was, and the new "
-       "vertices such a vertex sources stay at rest (0: off).",
-       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(exactSamplingSpacings)},
+       T::Real, G::AutoFeature, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.feature.onPlaneSpacings)},
       {"median_on_plane_spacings", "--on-plane-median", "", "Median on-plane tolerance",
        "Auto method: ...or unless half of the feature's vertices lie within this distance of "
-       "their planes and none farther than --on-plane-median-max (a sampler that rounds a few "
-       "samples near the edge; a blend or a bevel along it moves most of them off: the new "
-       "vertices of the far ones stay at rest; for an edge, both distances times the sine of "
-       "the angle its flanks meet at; 0: off).",
-       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(medianOnPlaneSpacings)},
+       "their planes and none farther than --on-plane-median-max (a sampler rounding a few "
+       "samples near the edge): the far ones' new vertices stay at rest. For an edge, both "
+       "distances times the sine of its flanks' angle (0: off).",
+       T::Real, G::AutoFeature, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.feature.medianOnPlaneSpacings)},
       {"max_median_on_plane_off_spacings", "--on-plane-median-max", "",
        "Median on-plane: farthest vertex",
        "Auto method: the farthest a vertex may lie from its plane for --on-plane-median to "
        "apply.",
-       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxMedianOnPlaneOffSpacings)},
+       T::Real, G::AutoFeature, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.feature.maxMedianOnPlaneOffSpacings)},
       {"min_feature_vertices", "--min-feature-vertices", "", "Minimum feature size",
        "Auto method: a feature with fewer new vertices than this stays as it was.",
-       T::Integer, G::EvidenceGuard, "vertices", 0, 1000, false, kNotInMeshLab, {}, {},
-       ES_INT(minFeatureVertices)},
+       T::Integer, G::AutoFeature, "vertices", 0, 1000, false, kNotInMeshLab, {}, {},
+       ES_INT(rules.feature.minFeatureVertices)},
       {"min_feature_angle_deg", "--min-feature-angle", "", "Minimum feature angle (deg)",
        "Auto method: an edge stays as it was when its flanks' planes meet at less than this "
        "angle, at a shallow crease or at a knife edge: the line they meet on is poorly "
        "determined there (0: off).",
-       T::Real, G::EvidenceGuard, "deg", 0, 90, false, kNotInMeshLab, {}, {},
-       ES_ANGLE(minFeatureAngleRad)},
+       T::Real, G::AutoFeature, "deg", 0, 90, false, kNotInMeshLab, {}, {},
+       ES_ANGLE(rules.feature.minFeatureAngleRad)},
       {"max_feature_line_chamfer_angle_deg", "--line-chamfer-angle", "",
        "Line-chamfer angle (deg)",
        "Auto method: an edge stays as it was when the line its flanks' planes meet on turns "
        "out of its chamfer by a median angle above this: a sharp edge runs along its chamfer "
        "(0: off).",
-       T::Real, G::EvidenceGuard, "deg", 0, 90, false, kNotInMeshLab, {}, {},
-       ES_ANGLE(maxFeatureLineChamferAngleRad)},
+       T::Real, G::AutoFeature, "deg", 0, 90, false, kNotInMeshLab, {}, {},
+       ES_ANGLE(rules.feature.maxFeatureLineChamferAngleRad)},
+      // ----- auto method: each new vertex
+      {"max_bent_move_spacings", "--bent-move", "", "Move across a bend",
+       "Auto method: a new vertex the bend test (--bend-fraction) would keep at rest moves with "
+       "its feature when its move is at most this long and nothing else refuses it, counted as "
+       "refused in the feature's evidence (a sampler rounds a sharp edge most near its "
+       "corners; 0: the bend keeps it at rest).",
+       T::Real, G::AutoVertex, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.vertex.maxBentMoveSpacings)},
       {"long_move_spacings", "--long-move", "", "Long move",
        "Auto method: a new vertex on an edge (not a corner) moved farther than this from its "
        "chamfer stays at rest when one of its vertices lies farther than --long-move-off-plane "
        "from its plane: a long extrapolation magnifies a curved flank's misfit (0: off).",
-       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(longMoveSpacings)},
+       T::Real, G::AutoVertex, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.vertex.longMoveSpacings)},
       {"max_long_move_off_plane_spacings", "--long-move-off-plane", "",
        "Long move off-plane distance",
        "Auto method: the off-plane distance a long move's vertices may have (see --long-move).",
-       T::Real, G::EvidenceGuard, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
-       ES_REAL(maxLongMoveOffPlaneSpacings)},
+       T::Real, G::AutoVertex, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.vertex.maxLongMoveOffPlaneSpacings)},
+      // ----- auto method: a rough input
+      {"flatten_rough_planes", "--keep-rough-planes", "", "Flatten a rough input's planes",
+       "Auto method: on a rough input left whole (a fused scan, see --smooth-noise), vertices "
+       "up to two sample spacings out of a planar region move onto its plane (beside a convex "
+       "edge, behind the planes around them); where that moved 1% of the vertices, again on "
+       "planes grown face by face. Off with --local-planes-only.",
+       T::Flag, G::AutoRoughInput, "", 0, 1, false, kNotInMeshLab, {}, {},
+       ES_FLAG(rules.rough.flattenRoughPlanes)},
   };
   return table;
 }

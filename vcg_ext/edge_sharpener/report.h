@@ -1,5 +1,6 @@
 // What each stage of Edge-Sharpener did: one struct, filled stage by stage,
-// printed by the CLI (text or JSON) and logged by the MeshLab filter.
+// printed by the CLI (text or JSON) and logged by the MeshLab filter; its
+// formatting for people (formatVerdictSummary, formatStages, formatReport).
 #pragma once
 
 #include <array>
@@ -111,6 +112,9 @@ struct EvidenceStats {
   std::size_t facesRemoved = 0;            ///< faces deleted by the two above
   std::size_t flattenedVertices = 0;       ///< left whole, rough: vertices of planes flattened
   std::size_t grownPlanes = 0;             ///< ...and planes grown face by face for it
+  /// Features per verdict (Verdict), each feature counted once.
+  std::array<std::size_t, kVerdictCount> verdicts{};
+  std::size_t count(Verdict v) const { return verdicts[static_cast<int>(v)]; }
 };
 
 /// Extended method: segmentation and zone labelling.
@@ -236,17 +240,73 @@ inline void formatGuards(std::ostream &s, const SharpenReport &r) {
 
 }  // namespace detail
 
-/// Multi-line human-readable summary (the CLI's default output, the MeshLab log).
-inline std::string formatReport(const SharpenReport &r) {
+/// What each stage did, one line per stage (the middle of formatReport; the
+/// CLI's --verbose).
+inline std::string formatStages(const SharpenReport &r) {
   std::ostringstream s;
-  s << "input: " << r.inputVertices << " vertices, " << r.inputFaces << " faces, longest edge "
-    << r.longestInputEdge << "\n";
   detail::formatDetection(s, r);
   if (r.extendedMethod) detail::formatFeatureZones(s, r);
   if (!r.geometryChanged) return s.str();
   detail::formatPlacement(s, r);
   detail::formatGuards(s, r);
+  return s.str();
+}
+
+/// The full stage report, one line per stage between the input and the output
+/// (the CLI's --verbose, the MeshLab log).
+inline std::string formatReport(const SharpenReport &r) {
+  std::ostringstream s;
+  s << "input: " << r.inputVertices << " vertices, " << r.inputFaces << " faces, longest edge "
+    << r.longestInputEdge << "\n";
+  s << formatStages(r);
+  if (!r.geometryChanged) return s.str();
   s << "output: " << r.outputVertices << " vertices, " << r.outputFaces << " faces\n";
+  return s.str();
+}
+
+/// What was restored and what was left, in one line without a newline (the
+/// CLI's default output, the MeshLab log, the JSON report's "summary"):
+///   auto:      "features: 14 restored, 3 left as they were: 2 too short, 1 shallow angle"
+///              (each verdict that occurred, in describe()'s words)
+///   paper, extended: "new vertices: 120 placed on sharp edges, 8 left at rest"
+///   detection only:  "detected: 686 chamfer faces, 12 corner faces, 6722 smooth-region faces"
+inline std::string formatVerdictSummary(const SharpenReport &r) {
+  std::ostringstream s;
+  if (!r.geometryChanged) {
+    s << "detected: " << r.filters.chamferFaces << " chamfer faces, " << r.filters.cornerFaces
+      << " corner faces, " << r.filters.redFaces << " smooth-region faces (geometry unchanged)";
+    return s.str();
+  }
+  if (r.evidenceGuard) {
+    const EvidenceStats &e = r.evidence;
+    std::size_t features = 0;
+    for (const std::size_t n : e.verdicts) features += n;
+    if (features == 0) {
+      s << "features: none found to restore";
+    } else {
+      const std::size_t restored = e.count(Verdict::Restored);
+      s << "features: " << restored << " restored, ";
+      if (restored == features) {
+        s << "none left";
+      } else {
+        s << features - restored << " left as they were:";
+        const char *separator = " ";
+        for (int i = 0; i < kVerdictCount; ++i) {
+          const auto v = static_cast<Verdict>(i);
+          if (!isLeft(v) || e.verdicts[i] == 0) continue;
+          s << separator << e.verdicts[i] << " " << describe(v);
+          separator = ", ";
+        }
+      }
+    }
+    if (e.flattenedVertices > 0)
+      s << "; " << e.flattenedVertices << " vertices flattened onto their planes";
+    return s.str();
+  }
+  s << "new vertices: " << r.placement.moved() << " placed on sharp edges, "
+    << r.placement.fallbacks() << " left at rest";
+  if (r.extendedMethod && r.extended.projectedVertices > 0)
+    s << "; " << r.extended.projectedVertices << " zone vertices moved onto their planes";
   return s.str();
 }
 
