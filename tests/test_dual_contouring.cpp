@@ -16,6 +16,7 @@
 #include "mesh_distance.h"
 #include "test_meshes/dual_contouring.h"
 #include "test_meshes/shapes.h"
+#include "closed_manifold.h"
 // (keep after the mesh headers)
 #include <vcg/complex/algorithms/inertia.h>
 #include <vcg/complex/algorithms/stat.h>
@@ -34,24 +35,7 @@ double maxAbsDistance(const shapes::Shape &shape, const shapes::TriangleList &me
   return worst;
 }
 
-/// Closed (no border edge), 2-manifold (edges and vertices), coherently and outward oriented,
-/// one component of genus 0.
-template <class M>
-void expectClosedManifold(M &mesh, const std::string &what) {
-  SCOPED_TRACE(what);
-  ASSERT_GT(mesh.fn, 0);
-  int edges = 0, borderEdges = 0, nonManifoldEdges = 0;
-  vcg::tri::Clean<M>::CountEdgeNum(mesh, edges, borderEdges, nonManifoldEdges);
-  EXPECT_EQ(borderEdges, 0);
-  EXPECT_EQ(nonManifoldEdges, 0);
-  vcg::tri::UpdateTopology<M>::FaceFace(mesh);
-  EXPECT_EQ(vcg::tri::Clean<M>::CountNonManifoldVertexFF(mesh, /*selectVert=*/false), 0);
-  EXPECT_TRUE(vcg::tri::Clean<M>::IsCoherentlyOrientedMesh(mesh));
-  EXPECT_EQ(vcg::tri::Clean<M>::CountConnectedComponents(mesh), 1);
-  EXPECT_EQ(mesh.vn - edges + mesh.fn, 2) << "Euler characteristic of a sphere-like surface";
-  vcg::tri::Inertia<M> inertia(mesh);
-  EXPECT_GT(inertia.Mass(), 0) << "faces must point outward";
-}
+using edge_sharpener::testing::expectClosedManifold;
 
 TEST(MeshesDualContouring, QefKeepsOneTwoOrThreePlanes) {
   int rank = 0;

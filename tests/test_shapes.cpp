@@ -11,6 +11,7 @@
 #include "mesh_distance.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "test_meshes/shapes.h"
+#include "closed_manifold.h"
 // (keep after the mesh headers)
 #include <vcg/complex/algorithms/closest.h>
 #include <vcg/complex/algorithms/inertia.h>
@@ -24,24 +25,12 @@ using edge_sharpener::MeshD;
 namespace shapes = edge_sharpener::test_meshes;
 using shapes::Point3d;
 
-/// Two-manifold, watertight, coherently oriented, outward (positive volume), genus 0.
+/// A closed solid's mesh (expectClosedManifold), with every vertex referenced and no
+/// zero-area face.
 template <class M>
 void expectClosedOrientedManifold(M& mesh, const std::string& what) {
+  edge_sharpener::testing::expectClosedManifold(mesh, what);
   SCOPED_TRACE(what);
-  ASSERT_GT(mesh.fn, 0);
-  int edges = 0, borderEdges = 0, nonManifoldEdges = 0;
-  vcg::tri::Clean<M>::CountEdgeNum(mesh, edges, borderEdges, nonManifoldEdges);
-  EXPECT_EQ(borderEdges, 0);
-  EXPECT_EQ(nonManifoldEdges, 0);
-  vcg::tri::UpdateTopology<M>::FaceFace(mesh);
-  // (not Clean::CountNonManifoldEdgeFF: it never releases the three face bit flags it
-  // allocates, so a process can call it only a few times; CountEdgeNum covers it)
-  EXPECT_EQ(vcg::tri::Clean<M>::CountNonManifoldVertexFF(mesh, /*selectVert=*/false), 0);
-  EXPECT_TRUE(vcg::tri::Clean<M>::IsCoherentlyOrientedMesh(mesh));
-  EXPECT_EQ(vcg::tri::Clean<M>::CountConnectedComponents(mesh), 1);
-  EXPECT_EQ(mesh.vn - edges + mesh.fn, 2) << "Euler characteristic of a sphere-like surface";
-  vcg::tri::Inertia<M> inertia(mesh);
-  EXPECT_GT(inertia.Mass(), 0) << "faces must point outward";
   EXPECT_EQ(vcg::tri::Clean<M>::CountUnreferencedVertex(mesh), 0);
   for (const auto& f : mesh.face) EXPECT_GT(vcg::DoubleArea(f), 0) << "zero-area face";
 }
