@@ -304,6 +304,8 @@ int run(const CliOptions &cli) {
     std::cout << "\n";
     if (cli.verbose) std::cout << es::formatStages(report);
     std::cout << es::formatVerdictSummary(report) << "\n";
+    if (const std::string notes = es::formatInputNotes(report); !notes.empty())
+      std::cout << notes << "\n";
     std::printf("time: %.*f s\n", seconds < 10 ? 3 : seconds < 100 ? 1 : 0, seconds);
     std::cout << "output: " << cli.output << ", " << m.VN() << " vertices, " << m.FN() << " faces";
     if (sharpEdgeCount)

@@ -27,6 +27,8 @@ inline nlohmann::json optionsToJson(const SharpenOptions &opt) {
 
 /// The report as JSON: each stage's counts; "evidence" (the auto method) with
 /// "verdicts", {verdict name: features}, every verdict; "summary", the line
+/// formatVerdictSummary() writes; "input_notes", formatInputNotes()'s ("" when
+/// nothing to say);
 /// formatVerdictSummary() writes.
 inline nlohmann::json reportToJson(const SharpenReport &r) {
   nlohmann::json placement = {{"moved", r.placement.moved()},
@@ -45,6 +47,11 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
         {"longest_edge", r.longestInputEdge}}},
       {"output", {{"vertices", r.outputVertices}, {"faces", r.outputFaces}}},
       {"geometry_changed", r.geometryChanged},
+      {"non_manifold",
+       {{"edges", r.nonManifold.edges},
+        {"vertices", r.nonManifold.vertices},
+        {"held_faces", r.nonManifold.heldFaces},
+        {"first_held_face", r.nonManifold.firstHeldFace}}},
       {"smooth_edges",
        {{"edges", r.smooth.edges},
         {"boundary", r.smooth.boundaryEdges},
@@ -123,6 +130,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"verdicts", verdicts}};
   }
   j["summary"] = formatVerdictSummary(r);
+  j["input_notes"] = formatInputNotes(r);
   return j;
 }
 

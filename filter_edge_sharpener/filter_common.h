@@ -61,8 +61,9 @@ inline const std::vector<FilterSpec> &filterTable() {
        "the intersection of the planes that extrapolate the adjacent smooth regions. "
        "Original vertices never move. Triangles left with an angle below the degenerate "
        "angle are removed.<br>"
-       "Needs a two-manifold triangle mesh (point clouds and non-manifold meshes are "
-       "refused and left untouched). The report of every stage is written to the log.",
+       "Needs a triangle mesh (a point cloud is refused and left untouched). Faces at a "
+       "non-manifold vertex or edge are left as they came, with the features that reach "
+       "them. The report of every stage is written to the log.",
        kInSharpen, true, &sharpen<CMeshO>, false,
        MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |
            MeshModel::MM_FACECOLOR | MeshModel::MM_FACEFLAGSELECT},
@@ -261,6 +262,8 @@ inline FilterOutcome runFilter(const FilterSpec &f, MeshModel &mm, const RichPar
   mm.cm.sfn = int(vcg::tri::UpdateSelection<CMeshO>::FaceCount(mm.cm));
   outcome.log.push_back(f.name);
   outcome.log.push_back("  " + formatVerdictSummary(report));
+  if (const std::string notes = formatInputNotes(report); !notes.empty())
+    outcome.log.push_back("  " + notes);
   for (const std::string &line : lines(formatReport(report))) outcome.log.push_back("  " + line);
   // New vertices take their sources' mean colour (subdivide()); per-wedge
   // texture coordinates are face data, copied from the split face.

@@ -1,6 +1,8 @@
-// generate-test-meshes OUTDIR [--cells 0.02,0.01] [--shapes cube,lblock]
+// generate-test-meshes OUTDIR [--cells 0.02,0.01] [--shapes cube,lblock] [--spots]
 // Writes <shape>_reference.ply (exact triangulation) and <shape>_mc<percent>.ply (marching
-// cubes with cells of <percent>% of the bounding-box diagonal) as binary PLY.
+// cubes with cells of <percent>% of the bounding-box diagonal) as binary PLY; with --spots
+// also <shape>_mc<percent>_spots.ply, the same with two non-manifold spots added
+// (non_manifold_spots.h): a vertex near a chamfer and an edge on one.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
@@ -10,6 +12,7 @@
 
 // vcglib's exporter relies on the mesh headers being included first.
 #include "edge_sharpener/util/mesh_types.h"
+#include "test_meshes/non_manifold_spots.h"
 #include "test_meshes/shapes.h"
 // (keep after the mesh headers)
 #include <wrap/io_trimesh/export_ply.h>
@@ -19,7 +22,7 @@ namespace {
 using edge_sharpener::Mesh;
 namespace shapes = edge_sharpener::test_meshes;
 
-bool savePly(Mesh& mesh, const std::filesystem::path& path) {
+bool savePly(Mesh &mesh, const std::filesystem::path &path) {
   const int mask = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX;
   const int error =
       vcg::tri::io::ExporterPLY<Mesh>::Save(mesh, path.string().c_str(), mask, /*binary=*/true);
@@ -31,14 +34,14 @@ bool savePly(Mesh& mesh, const std::filesystem::path& path) {
   return true;
 }
 
-void report(const std::filesystem::path& path, const Mesh& mesh, double seconds) {
+void report(const std::filesystem::path &path, const Mesh &mesh, double seconds) {
   std::printf("%-40s %8d vertices %8d faces %7.2f s\n", path.string().c_str(), mesh.vn, mesh.fn,
               seconds);
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char **argv) {
   CLI::App app{"Writes the exact test shapes and their marching-cubes meshes as binary PLY."};
   std::string outputDir;
   std::vector<double> cellFractions = {0.02, 0.01};
@@ -49,12 +52,16 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->check(CLI::PositiveNumber);
   app.add_option("--shapes", shapeNames, "Shapes to write (default: all)")->delimiter(',');
+  bool spots = false;
+  app.add_flag("--spots", spots,
+               "Also write each marching-cubes mesh with a non-manifold vertex near a chamfer "
+               "and a non-manifold edge on one (<name>_spots.ply)");
   CLI11_PARSE(app, argc, argv);
 
   try {
     std::filesystem::create_directories(outputDir);
-    for (const std::string& name : shapeNames) {
-      const shapes::Shape& shape = shapes::shapeByName(name);
+    for (const std::string &name : shapeNames) {
+      const shapes::Shape &shape = shapes::shapeByName(name);
       Mesh mesh;
       auto start = std::chrono::steady_clock::now();
       shapes::buildReference(shape, mesh);
@@ -73,9 +80,20 @@ int main(int argc, char** argv) {
             (name + "_mc" + shapes::percentLabel(fraction) + ".ply");
         if (!savePly(mesh, mcPath)) return 1;
         report(mcPath, mesh, elapsed());
+        if (!spots) continue;
+        using shapes::SpotKind, shapes::SpotPlace;
+        // Both places chosen on the clean mesh (a spot's tetrahedron is bent too).
+        const std::size_t near = shapes::spotVertex(mesh, SpotPlace::NearChamfer);
+        const std::size_t on = shapes::spotVertex(mesh, SpotPlace::OnChamfer);
+        shapes::addSpot(mesh, SpotKind::Vertex, near);
+        shapes::addSpot(mesh, SpotKind::Edge, on);
+        std::filesystem::path spotsPath = mcPath;
+        spotsPath.replace_extension().concat("_spots.ply");
+        if (!savePly(mesh, spotsPath)) return 1;
+        report(spotsPath, mesh, elapsed());
       }
     }
-  } catch (const std::exception& error) {
+  } catch (const std::exception &error) {
     std::fprintf(stderr, "generate-test-meshes: error: %s\n", error.what());
     return 1;
   }

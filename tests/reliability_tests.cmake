@@ -7,7 +7,8 @@
 # run the CLI: cli_tests (tests/test_cli.cpp), what the CLI prints (ctest -R '^Cli\.').
 if(TARGET edge-sharpener AND TARGET mesh-distance)
   edge_sharpener_test(reliability_tests
-    reliability/test_bad_input.cpp reliability/test_invariants.cpp reliability/test_noise.cpp)
+    reliability/test_bad_input.cpp reliability/test_invariants.cpp reliability/test_noise.cpp
+    reliability/test_non_manifold.cpp)
   target_link_libraries(reliability_tests PRIVATE test_meshes)
   target_include_directories(reliability_tests PRIVATE
     "${CMAKE_CURRENT_SOURCE_DIR}" "${PROJECT_SOURCE_DIR}/apps")

@@ -104,8 +104,9 @@ int main(int argc, char **argv) {
     es::refineExtendedPlacement(m, moves, zones, opt, report);
     // The evidence as the guard sees it (before the cleanup); the harm after every guard.
     const es::InputSurface surface{zones.inputFaces, inputFaces.faceVertices()};
+    const es::HeldFaces noneHeld;
     es::EvidenceGuard<es::Mesh> guard(m, moves, zones.support, surface, measures,
-                                      report.longestInputEdge, opt);
+                                      report.longestInputEdge, opt, noneHeld);
     const auto judged = guard.judge();
     const std::vector<es::Feature> &features = guard.features();
     const std::vector<std::uint32_t> &featureOf = guard.featureOf();

@@ -318,7 +318,8 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
         finally:
             if in_edit_mode:
                 bpy.ops.object.mode_set(mode="EDIT")
-        self.report({"INFO"}, f"Edge-Sharpener: {report['summary']}; {len(faces)} -> {len(new_faces)} triangles"
+        notes = f"; {report['input_notes']}" if report.get("input_notes") else ""
+        self.report({"INFO"}, f"Edge-Sharpener: {report['summary']}{notes}; {len(faces)} -> {len(new_faces)} triangles"
                               + (f", {marked} edges marked sharp" if marked else ""))
         return {"FINISHED"}
 

@@ -5,6 +5,7 @@
 //   plugin_test_tool make-lblock OUT.ply       sharp L-shaped block, rotated off the axes
 //   plugin_test_tool make-pointcloud OUT.ply   vertices only
 //   plugin_test_tool make-nonmanifold OUT.ply  three triangles on one edge
+//   plugin_test_tool make-misoriented OUT.ply  a tetrahedron with one face flipped
 //   plugin_test_tool paint-gradient IN OUT      IN with vertex colours varying along x and y
 //   plugin_test_tool info IN.ply               counts, colours, selection (key=value lines)
 //   plugin_test_tool compare A.ply B.ply [--rel-tol T] [--colors] [--vertex-colors] [--selection]
@@ -12,6 +13,9 @@
 //       1e-5), same faces; with --colors also the same per-face colours, with
 //       --vertex-colors the same per-vertex colours, with --selection the same
 //       selected faces (both files need the data asked for).
+//   plugin_test_tool spot-faces IN.ply OUT.ply
+//       IN has faces at non-manifold spots, and each comes out in OUT as it was (the same
+//       vertex indices, bit-identical positions); OUT has no other face at a spot.
 #include <edge_sharpener/util/mesh_types.h>
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/color.h>
@@ -29,6 +33,8 @@
 #include <set>
 #include <string>
 #include <vector>
+
+#include "../reliability/invariants.h"
 
 using Mesh = edge_sharpener::Mesh;
 using Coord = Mesh::CoordType;
@@ -118,6 +124,39 @@ int makeNonManifold(const std::string &out) {
   Mesh m;
   fromArrays(m, pts, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 1, 4}});
   return save(m, out) ? 0 : 2;
+}
+
+int makeMisoriented(const std::string &out) {
+  std::vector<Coord> pts{Coord(0, 0, 0), Coord(1, 0, 0), Coord(0, 1, 0), Coord(0, 0, 1)};
+  Mesh m;
+  fromArrays(m, pts, {{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}});
+  return save(m, out) ? 0 : 2;
+}
+
+/// Whether every face of `in` at a non-manifold spot comes out in `out` as it was.
+int spotFaces(const std::string &inPath, const std::string &outPath) {
+  Loaded in, out;
+  if (!load(inPath, in) || !load(outPath, out)) return 2;
+  const auto spots = es_reliability::facesAtNonManifoldSpots(in.m);
+  if (spots.empty()) {
+    std::cout << "FAIL: " << inPath << " has no non-manifold spot\n";
+    return 1;
+  }
+  const auto outSpots = es_reliability::facesAtNonManifoldSpots(out.m);
+  std::size_t changed = 0;
+  for (const auto &t : spots) {
+    bool same = outSpots.count(t) > 0;
+    for (std::size_t v : t)
+      same = same && v < out.m.vert.size() && out.m.vert[v].cP() == in.m.vert[v].cP();
+    changed += !same;
+  }
+  if (changed > 0 || outSpots.size() != spots.size()) {
+    std::cout << "FAIL: " << changed << " of " << spots.size()
+              << " faces at spots changed; the output has " << outSpots.size() << "\n";
+    return 1;
+  }
+  std::cout << "OK: " << spots.size() << " faces at non-manifold spots as they came\n";
+  return 0;
 }
 
 /// IN with vertex colours that vary along x and y (blue 7, opaque): a
@@ -270,7 +309,9 @@ int compare(const std::string &pa, const std::string &pb, double relTol, bool co
 }
 
 int usage() {
-  std::cerr << "usage: plugin_test_tool make-lblock|make-pointcloud|make-nonmanifold OUT\n"
+  std::cerr << "usage: plugin_test_tool make-lblock|make-pointcloud|make-nonmanifold|"
+               "make-misoriented OUT\n"
+               "       plugin_test_tool spot-faces IN OUT\n"
                "       plugin_test_tool paint-gradient IN OUT\n"
                "       plugin_test_tool info IN\n"
                "       plugin_test_tool compare A B [--rel-tol T] [--colors] [--vertex-colors] "
@@ -285,6 +326,8 @@ int main(int argc, char **argv) {
   if (args.size() == 2 && args[0] == "make-lblock") return makeLBlock(args[1]);
   if (args.size() == 2 && args[0] == "make-pointcloud") return makePointCloud(args[1]);
   if (args.size() == 2 && args[0] == "make-nonmanifold") return makeNonManifold(args[1]);
+  if (args.size() == 2 && args[0] == "make-misoriented") return makeMisoriented(args[1]);
+  if (args.size() == 3 && args[0] == "spot-faces") return spotFaces(args[1], args[2]);
   if (args.size() == 2 && args[0] == "info") return info(args[1]);
   if (args.size() == 3 && args[0] == "paint-gradient") return paintGradient(args[1], args[2]);
   if (args.size() >= 3 && args[0] == "compare") {

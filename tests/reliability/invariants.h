@@ -13,10 +13,15 @@
 #include <vcg/space/triangle3.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <map>
+#include <numeric>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "edge_sharpener/report.h"
@@ -86,6 +91,55 @@ bool identical(const M &a, const M &b) {
   return true;
 }
 
+/// The faces of m at a non-manifold spot, as vertex-index triples rotated to
+/// start at their lowest index: the faces at a vertex on an edge of three or
+/// more faces, or whose faces do not form one fan joined by two-face edges.
+/// Brute force over vertex-index pairs, independent of the core's FF walk.
+template <class M>
+std::set<std::array<std::size_t, 3>> facesAtNonManifoldSpots(const M &m) {
+  const auto index = [&](const auto *v) { return std::size_t(vcg::tri::Index(m, v)); };
+  std::map<std::pair<std::size_t, std::size_t>, int> edgeFaces;
+  for (const auto &f : m.face)
+    for (int k = 0; k < 3; ++k) {
+      std::size_t a = index(f.cV(k)), b = index(f.cV((k + 1) % 3));
+      ++edgeFaces[{std::min(a, b), std::max(a, b)}];
+    }
+  std::vector<std::vector<std::size_t>> around(m.vert.size());
+  for (std::size_t fi = 0; fi < m.face.size(); ++fi)
+    for (int k = 0; k < 3; ++k) around[index(m.face[fi].cV(k))].push_back(fi);
+  const auto triple = [&](const auto &f) {
+    std::array<std::size_t, 3> t{index(f.cV(0)), index(f.cV(1)), index(f.cV(2))};
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    return t;
+  };
+  std::set<std::array<std::size_t, 3>> out;
+  for (std::size_t v = 0; v < m.vert.size(); ++v) {
+    const auto &faces = around[v];
+    bool spot = false;
+    std::vector<std::size_t> group(faces.size());
+    std::iota(group.begin(), group.end(), 0);
+    const auto root = [&](std::size_t i) {
+      while (group[i] != i) i = group[i];
+      return i;
+    };
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t w = index(m.face[faces[i]].cV(k));
+        if (w == v) continue;
+        const int n = edgeFaces[{std::min(v, w), std::max(v, w)}];
+        if (n > 2) spot = true;
+        if (n != 2) continue;
+        for (std::size_t j = 0; j < faces.size(); ++j)
+          for (int l = 0; l < 3; ++l)
+            if (j != i && index(m.face[faces[j]].cV(l)) == w) group[root(i)] = root(j);
+      }
+    for (std::size_t i = 0; i < faces.size(); ++i) spot |= root(i) != root(0);
+    if (spot)
+      for (std::size_t fi : faces) out.insert(triple(m.face[fi]));
+  }
+  return out;
+}
+
 /// Distance from p to the nearest face of m (brute force: for a few points).
 template <class M>
 double distanceToSurface(const M &m, const P3 &p) {
@@ -146,8 +200,10 @@ bool inputSliverAtRest(const M &input, const M &output, const F &f, double bound
 ///  - finite coordinates; original vertices keep index and bit-identical position;
 ///  - vertex/face counts equal the report's, and the report's arithmetic holds;
 ///  - output is compact, a 2-manifold if the input was, consistently oriented if the
-///    input was; closed stays closed, and an open input gains boundary edges only by
-///    splitting (a boundary chamfer edge becomes two), never more than it had;
+///    input was; every face of the input at a non-manifold spot comes out as it was
+///    (the same vertex indices), and the report counts them; closed stays closed, and an open input
+///    gains boundary edges only by splitting (a boundary chamfer edge becomes two), never more than
+///    it had;
 ///  - no face with an angle below `degenerateAngleRad` contains a moved vertex: every
 ///    vertex of such a face lies on the input surface (inserted vertices start on it, at
 ///    an edge midpoint or face centroid, and leave it only when placed), unless the face
@@ -182,6 +238,18 @@ std::string sharpenProblem(M &input, M &output, const edge_sharpener::SharpenRep
       if (v < &output.vert.front() || v > &output.vert.back()) return "face points outside vert";
       if (v->IsD()) return "face references a deleted vertex";
     }
+  const auto spotFaces = facesAtNonManifoldSpots(input);
+  if (!spotFaces.empty()) {
+    const auto outputSpots = facesAtNonManifoldSpots(output);
+    for (const auto &t : spotFaces)
+      if (!outputSpots.count(t))
+        return "face (" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
+               std::to_string(t[2]) + ") at a non-manifold spot did not come out as it was";
+    if (outputSpots.size() != spotFaces.size()) return "the non-manifold spots changed";
+    if (r.nonManifold.heldFaces < spotFaces.size())
+      return "report holds " + std::to_string(r.nonManifold.heldFaces) + " faces, " +
+             std::to_string(spotFaces.size()) + " at spots";
+  }
   const Topology in = topologyOf(input), out = topologyOf(output);
   if (in.manifold() && !out.manifold()) return "output is not a 2-manifold";
   if (in.oriented && !out.oriented) return "output is not consistently oriented";

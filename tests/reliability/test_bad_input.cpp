@@ -72,11 +72,10 @@ std::vector<BadInput> badInputs() {
   add(Outcome::Processed, "", 4, {"tetra_tristrips.ply"});
   add(Outcome::Processed, "", 14, {"zero_area_face.off"});
   add(Outcome::Refused, "repeats a vertex", 5, {"repeated_vertex_face.off"});
-  add(Outcome::Refused, "non-manifold edges", 5,
-      {"duplicate_face.off", "duplicate_face_flipped.obj"});
+  add(Outcome::Processed, "", 5, {"duplicate_face.off", "duplicate_face_flipped.obj"});
   add(Outcome::Processed, "", 12, {"duplicate_vertex.off", "unreferenced_vertices.off"});
-  add(Outcome::Refused, "non-manifold edges", 3, {"nonmanifold_edge.off"});
-  add(Outcome::Refused, "non-manifold vert", 8, {"nonmanifold_vertex.off"});
+  add(Outcome::Processed, "", 3, {"nonmanifold_edge.off"});
+  add(Outcome::Processed, "", 8, {"nonmanifold_vertex.off"});
   add(Outcome::Refused, "consistently oriented", 4, {"inconsistent_orientation.off"});
   add(Outcome::Processed, "", 10, {"open_box.off"});
   add(Outcome::Processed, "", 16, {"two_components.obj"});

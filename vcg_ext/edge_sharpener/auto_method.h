@@ -20,6 +20,7 @@
 #include "guards/vertex_moves.h"
 #include "options.h"
 #include "report.h"
+#include "util/non_manifold.h"
 
 namespace edge_sharpener {
 
@@ -81,10 +82,12 @@ class AutoMethod {
  public:
   /// Before the split: keeps the input's faces (to give back where nothing
   /// moved) and measures its surface (noise, planar share).
-  AutoMethod(MeshType &m, const FeatureZones &zones, const SharpenOptions &opt)
+  AutoMethod(MeshType &m, const FeatureZones &zones, const SharpenOptions &opt,
+             const HeldFaces &held)
       : m_(m),
         zones_(zones),
         opt_(opt),
+        held_(held),
         input_(m),
         surface_(
             measureSurface(m, zones.inputFaces, zones.faceRegion, zones.support.sampleSpacing)) {}
@@ -94,7 +97,7 @@ class AutoMethod {
   void judgeFeatures(VertexMoves<MeshType> &moves, double longestInputEdge) {
     guard_.emplace(m_, moves, zones_.support,
                    InputSurface{zones_.inputFaces, input_.faceVertices()}, surface_,
-                   longestInputEdge, opt_);
+                   longestInputEdge, opt_, held_);
     stats_ = guard_->revertWeakFeatures();
   }
 
@@ -141,6 +144,7 @@ class AutoMethod {
   MeshType &m_;
   const FeatureZones &zones_;
   const SharpenOptions &opt_;
+  const HeldFaces &held_;
   InputFaces<MeshType> input_;
   SurfaceMeasures surface_;
   std::optional<EvidenceGuard<MeshType>> guard_;  ///< from judgeFeatures() on

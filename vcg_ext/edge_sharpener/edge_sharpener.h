@@ -25,9 +25,14 @@ class InputError : public std::runtime_error {
 };
 
 /// Returns an empty string when `m` can be processed, otherwise a one-line
-/// reason (no faces, NaN/Inf coordinates, non-manifold edge or vertex, ...).
+/// reason (no faces, NaN/Inf coordinates, a face repeating a vertex,
+/// inconsistent orientation). Non-manifold vertices and edges are processed:
+/// their faces are left as they came (util/non_manifold.h); `nonManifold`,
+/// when not null, tells whether there are any.
 /// \pre m has face-face adjacency enabled; vectors compact (no deleted elements).
 /// Recomputes m's FF topology.
+template <class MeshType>
+std::string findInputProblem(MeshType &m, bool *nonManifold);
 template <class MeshType>
 std::string findInputProblem(MeshType &m);
 
@@ -39,6 +44,9 @@ std::string findInputProblem(MeshType &m);
 ///         Where m has the per-vertex attribute kRestoredVertexAttribute
 ///         (restored_edges.h), it marks the vertices placed on sharp edges.
 /// \throws InputError (mesh untouched) when findInputProblem() reports a problem.
+/// Faces at non-manifold vertices and edges, and the features that reach
+/// them, are left as they came; the output keeps those vertices and edges
+/// (report.nonManifold says how many and where).
 template <class MeshType>
 SharpenReport sharpen(MeshType &m, const SharpenOptions &opt = {});
 

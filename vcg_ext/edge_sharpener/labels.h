@@ -84,8 +84,9 @@ enum class Verdict : std::uint8_t {
   MostlyRefused,      ///< placement's tests refused most of its new vertices
   CornerOfWeakEdge,   ///< a corner one of whose edges was left
   AlreadySharp,       ///< its moves slide along the input: sharp there already
+  AtNonManifoldSpot,  ///< it reaches a face held at a non-manifold spot
 };
-constexpr int kVerdictCount = 10;
+constexpr int kVerdictCount = 11;
 
 /// Whether a feature of this verdict is left as it came.
 inline bool isLeft(Verdict v) {
@@ -105,6 +106,7 @@ inline const char *toString(Verdict v) {
     case Verdict::MostlyRefused: return "mostly_refused";
     case Verdict::CornerOfWeakEdge: return "corner_of_weak_edge";
     case Verdict::AlreadySharp: return "already_sharp";
+    case Verdict::AtNonManifoldSpot: return "at_non_manifold_spot";
   }
   return "unknown";
 }
@@ -122,6 +124,7 @@ inline const char *describe(Verdict v) {
     case Verdict::MostlyRefused: return "mostly refused";
     case Verdict::CornerOfWeakEdge: return "at a corner of a weak edge";
     case Verdict::AlreadySharp: return "already sharp";
+    case Verdict::AtNonManifoldSpot: return "at a non-manifold spot";
   }
   return "unknown";
 }

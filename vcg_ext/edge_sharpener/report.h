@@ -134,6 +134,14 @@ struct ExtendedStats {
   double sampleSpacing = 0;  ///< the input's median edge length: the unit of every `...Spacings`
 };
 
+/// What the input had at its non-manifold spots.
+struct NonManifoldStats {
+  std::size_t edges = 0;          ///< edges shared by three or more faces
+  std::size_t vertices = 0;       ///< vertices whose faces are not one fan (edge ends included)
+  std::size_t heldFaces = 0;      ///< faces left as they came there
+  std::size_t firstHeldFace = 0;  ///< lowest input index of a held face
+};
+
 struct SharpenReport {
   std::size_t inputVertices = 0, inputFaces = 0;
   std::size_t outputVertices = 0, outputFaces = 0;
@@ -150,6 +158,7 @@ struct SharpenReport {
   bool extendedMethod = false;
   ExtendedStats extended;        ///< filled by the extended method only
   bool geometryChanged = false;  ///< false for detection-only runs
+  NonManifoldStats nonManifold;  ///< the spots held as they came (none: zeros)
 };
 
 namespace detail {
@@ -307,6 +316,21 @@ inline std::string formatVerdictSummary(const SharpenReport &r) {
     << r.placement.fallbacks() << " left at rest";
   if (r.extendedMethod && r.extended.projectedVertices > 0)
     s << "; " << r.extended.projectedVertices << " zone vertices moved onto their planes";
+  return s.str();
+}
+
+/// What the input had that the run left as it came, in one line for people
+/// ("" when nothing): its non-manifold spots and its open borders.
+inline std::string formatInputNotes(const SharpenReport &r) {
+  std::ostringstream s;
+  const NonManifoldStats &n = r.nonManifold;
+  if (n.vertices > 0)
+    s << "non-manifold: " << n.edges << (n.edges == 1 ? " edge, " : " edges, ") << n.vertices
+      << (n.vertices == 1 ? " vertex" : " vertices") << "; the " << n.heldFaces
+      << " faces there left as they came (the first: face " << n.firstHeldFace << ")";
+  if (r.smooth.boundaryEdges > 0)
+    s << (n.vertices > 0 ? "; " : "") << "open: " << r.smooth.boundaryEdges
+      << " border edges, their vertices kept where they are";
   return s.str();
 }
 

@@ -16,6 +16,7 @@
 #include "../filters.h"
 #include "../guards/intersection_guard.h"
 #include "../guards/vertex_moves.h"
+#include "../held_faces.h"
 #include "../option_table.h"
 #include "../placement.h"
 #include "../restored_edges.h"
@@ -23,6 +24,7 @@
 #include "../subdivision.h"
 #include "../util/fast_topology.h"
 #include "../util/input_check.h"
+#include "../util/non_manifold.h"
 
 namespace edge_sharpener {
 
@@ -155,13 +157,14 @@ void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
 }
 
 /// Checks the mesh and the options (InputError otherwise, the mesh
-/// untouched); the report's input counts.
+/// untouched); the report's input counts. `nonManifold` tells whether the
+/// mesh has non-manifold spots (held as they came: holdingNonManifoldSpots).
 template <class MeshType>
-SharpenReport validate(MeshType &m, const SharpenOptions &opt) {
+SharpenReport validate(MeshType &m, const SharpenOptions &opt, bool *nonManifold = nullptr) {
   vcg::tri::RequireFFAdjacency(m);
   vcg::tri::RequireCompactness(m);
   if (std::string problem = findOptionProblem(opt); !problem.empty()) throw InputError(problem);
-  const std::string problem = findInputProblem(m);
+  const std::string problem = findInputProblem(m, nonManifold);
   if (!problem.empty()) throw InputError(problem);
   SharpenReport report;
   report.inputVertices = m.vert.size();
@@ -170,11 +173,28 @@ SharpenReport validate(MeshType &m, const SharpenOptions &opt) {
   return report;
 }
 
-/// validate(), for a run that changes the mesh.
-template <class MeshType>
-SharpenReport startSharpening(MeshType &m, const SharpenOptions &opt) {
-  SharpenReport report = validate(m, opt);
-  report.geometryChanged = true;
+/// Runs `pipeline(held, report)` on `m`. A mesh with non-manifold spots is
+/// cut loose there first (NonManifoldCut): the pipeline sees a 2-manifold
+/// mesh whose faces at the spots are held; afterwards they are welded back,
+/// so the output has the input's non-manifold vertices and edges.
+template <class MeshType, class Pipeline>
+SharpenReport holdingNonManifoldSpots(MeshType &m, const SharpenOptions &opt, Pipeline &&pipeline) {
+  bool nonManifold = false;
+  SharpenReport report = validate(m, opt, &nonManifold);
+  if (!nonManifold) return pipeline(HeldFaces{}, report);
+  NonManifoldCut<MeshType> cut(m);
+  if (!cut.manifold()) {
+    cut.weld();
+    throw InputError(
+        "mesh has non-manifold spots too tangled to hold apart; repair them first (MeshLab: "
+        "Repair non Manifold Edges, then Vertices)");
+  }
+  report = pipeline(cut.held(), report);
+  cut.weld();
+  if (report.geometryChanged) updateOutputNormals(m);
+  report.nonManifold = cut.stats();
+  report.outputVertices = m.vert.size();
+  report.outputFaces = m.face.size();
   return report;
 }
 
@@ -193,10 +213,12 @@ void guardAndFinish(MeshType &m, VertexMoves<MeshType> &moves, MeshLabels<MeshTy
 
 /// The paper's method (section 3): six filters, split, place, clean up.
 template <class MeshType>
-SharpenReport sharpenPaper(MeshType &m, const SharpenOptions &opt) {
-  SharpenReport report = startSharpening(m, opt);
+SharpenReport sharpenPaper(MeshType &m, const SharpenOptions &opt, const HeldFaces &held,
+                           SharpenReport report) {
+  report.geometryChanged = true;
   MeshLabels<MeshType> labels(m);
   const SupportPlanes support = detectByFilters(m, labels, opt, report);
+  holdFaces(m, labels, held);
   reportProgress(opt, 40, "Edge-Sharpener: subdivision");
   const SplitPlan plan = planSplits(m, labels);
   report.subdivision = subdivide(m, plan, labels);
@@ -211,10 +233,12 @@ SharpenReport sharpenPaper(MeshType &m, const SharpenOptions &opt) {
 /// The extended method: feature zones of any width, their vertices projected
 /// onto their regions' planes beside the restored edges.
 template <class MeshType>
-SharpenReport sharpenExtended(MeshType &m, const SharpenOptions &opt) {
-  SharpenReport report = startSharpening(m, opt);
+SharpenReport sharpenExtended(MeshType &m, const SharpenOptions &opt, const HeldFaces &held,
+                              SharpenReport report) {
+  report.geometryChanged = true;
   MeshLabels<MeshType> labels(m);
   const FeatureZones zones = detectByZones(m, labels, opt, report);
+  holdFaces(m, labels, held);
   reportProgress(opt, 40, "Edge-Sharpener: subdivision");
   const SplitPlan plan = planSplits(m, labels);
   report.subdivision = subdivide(m, plan, labels);
@@ -223,6 +247,7 @@ SharpenReport sharpenExtended(MeshType &m, const SharpenOptions &opt) {
   placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt,
                         PlacementPolicy::extendedMethod(opt), zones.support);
   refineExtendedPlacement(m, moves, zones, opt, report);
+  sendBackHeldVertices(moves, held);
   guardAndFinish(m, moves, labels, opt, report);
   return report;
 }
@@ -230,12 +255,14 @@ SharpenReport sharpenExtended(MeshType &m, const SharpenOptions &opt) {
 /// The auto method: the extended method, each feature restored only on
 /// strong evidence (auto_method.h; its rules: rulebook.h).
 template <class MeshType>
-SharpenReport sharpenAuto(MeshType &m, const SharpenOptions &opt) {
-  SharpenReport report = startSharpening(m, opt);
+SharpenReport sharpenAuto(MeshType &m, const SharpenOptions &opt, const HeldFaces &held,
+                          SharpenReport report) {
+  report.geometryChanged = true;
   MeshLabels<MeshType> labels(m);
   const FeatureZones zones = detectByZones(m, labels, opt, report);
+  holdFaces(m, labels, held);
   reportProgress(opt, 40, "Edge-Sharpener: subdivision");
-  AutoMethod<MeshType> autoMethod(m, zones, opt);
+  AutoMethod<MeshType> autoMethod(m, zones, opt, held);
   const SplitPlan plan = planSplits(m, labels);
   report.subdivision = subdivide(m, plan, labels);
   VertexMoves<MeshType> moves(m, plan, labels, /*originalsMayMove=*/true);
@@ -243,6 +270,7 @@ SharpenReport sharpenAuto(MeshType &m, const SharpenOptions &opt) {
   placeInsertedVertices(m, plan, labels, report.longestInputEdge, opt,
                         PlacementPolicy::autoMethod(opt), zones.support);
   refineExtendedPlacement(m, moves, zones, opt, report);
+  sendBackHeldVertices(moves, held);
   autoMethod.judgeFeatures(moves, report.longestInputEdge);
   reportProgress(opt, 80, "Edge-Sharpener: degenerate cleanup");
   const GuardStats guards = autoMethod.runGuards(moves, labels, report.longestInputEdge);
@@ -261,18 +289,20 @@ SharpenReport sharpenAuto(MeshType &m, const SharpenOptions &opt) {
 
 template <class MeshType>
 SharpenReport detectChamfers(MeshType &m, const SharpenOptions &opt) {
-  SharpenReport report = detail::validate(m, opt);
-  MeshLabels<MeshType> labels(m);
-  if (opt.method == Method::Paper)
-    detail::detectByFilters(m, labels, opt, report);
-  else
-    detail::detectByZones(m, labels, opt, report);
-  colorize(m, labels);
-  selectChamferFaces(m, labels);
-  report.outputVertices = m.vert.size();
-  report.outputFaces = m.face.size();
-  detail::reportProgress(opt, 100, "Edge-Sharpener: done");
-  return report;
+  return detail::holdingNonManifoldSpots(m, opt, [&](const HeldFaces &held, SharpenReport report) {
+    MeshLabels<MeshType> labels(m);
+    if (opt.method == Method::Paper)
+      detail::detectByFilters(m, labels, opt, report);
+    else
+      detail::detectByZones(m, labels, opt, report);
+    holdFaces(m, labels, held);
+    colorize(m, labels);
+    selectChamferFaces(m, labels);
+    report.outputVertices = m.vert.size();
+    report.outputFaces = m.face.size();
+    detail::reportProgress(opt, 100, "Edge-Sharpener: done");
+    return report;
+  });
 }
 
 template <class MeshType>
@@ -281,7 +311,9 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   const auto pipeline = opt.method == Method::Paper      ? detail::sharpenPaper<MeshType>
                         : opt.method == Method::Extended ? detail::sharpenExtended<MeshType>
                                                          : detail::sharpenAuto<MeshType>;
-  return pipeline(m, opt);
+  return detail::holdingNonManifoldSpots(m, opt, [&](const HeldFaces &held, SharpenReport report) {
+    return pipeline(m, opt, held, std::move(report));
+  });
 }
 
 }  // namespace edge_sharpener

@@ -33,6 +33,7 @@
 #include "../placement.h"
 #include "../report.h"
 #include "../subdivision.h"
+#include "../util/non_manifold.h"
 #include "../util/statistics.h"
 #include "../util/vertex_faces.h"
 #include "box_hash_grid.h"
@@ -528,7 +529,10 @@ inline bool meshEvidenceIsWeak(double refused, double lift, const SurfaceMeasure
 /// the mesh as a whole shows too little evidence (meshEvidenceIsWeak with the
 /// moves' median `lift`), else its own (judgeFeature, on a mesh sampled
 /// exactly or not); a corner one of whose edges is left, CornerOfWeakEdge (a
-/// corner is where its edges meet); and, on a mesh sampled exactly and mostly
+/// corner is where its edges meet); a feature one of whose new vertices lies
+/// on an edge from a `pinned` vertex (a vertex of a face held at a
+/// non-manifold spot), AtNonManifoldSpot (restoring it would bend that face);
+/// and, on a mesh sampled exactly and mostly
 /// sharp already, a feature whose own moves slide along it, AlreadySharp
 /// (Feature::medianLift; its moves that lift are judged one by one,
 /// EvidenceGuard::keptMoves).
@@ -536,12 +540,17 @@ inline std::vector<Verdict> featureVerdicts(const SplitPlan &plan,
                                             const std::vector<Feature> &features,
                                             const std::vector<std::uint32_t> &featureOf,
                                             double lift, const SurfaceMeasures &surface,
-                                            const SharpenOptions &opt, bool exactSampling = false) {
+                                            const SharpenOptions &opt, bool exactSampling = false,
+                                            const std::vector<char> &pinned = {}) {
   if (meshEvidenceIsWeak(refusedFraction(features), lift, surface, opt, exactSampling))
     return std::vector<Verdict>(features.size(), Verdict::MeshEvidenceWeak);
   std::vector<Verdict> verdict(features.size());
   for (std::size_t c = 0; c < features.size(); ++c)
     verdict[c] = judgeFeature(features[c], opt, exactSampling);
+  for (std::size_t k = 0; k < plan.inserted.size() && !pinned.empty(); ++k)
+    for (int i = 0; i < plan.inserted[k].originalCount; ++i)
+      if (plan.inserted[k].original[i] < pinned.size() && pinned[plan.inserted[k].original[i]])
+        verdict[featureOf[k]] = Verdict::AtNonManifoldSpot;
   // An edge feature's weakness reaches the corner features around its sources;
   // an edge already sharp is no evidence against the corner it runs into.
   std::vector<char> weakSource(plan.originalVertexCount, 0);
@@ -577,14 +586,15 @@ class EvidenceGuard {
   /// \pre placement (and the extended refinement) has run.
   EvidenceGuard(MeshType &m, VertexMoves<MeshType> &moves, const SupportPlanes &support,
                 const InputSurface &input, const SurfaceMeasures &surface, double longestInputEdge,
-                const SharpenOptions &opt)
+                const SharpenOptions &opt, const HeldFaces &held)
       : m_(m),
         moves_(moves),
         support_(support),
         input_(input),
         surface_(surface),
         longestInputEdge_(longestInputEdge),
-        opt_(opt) {
+        opt_(opt),
+        held_(held) {
     const auto regionOf = [&](std::size_t v) -> long {
       return v < support.region.size() ? support.region[v] : -1;
     };
@@ -649,7 +659,7 @@ class EvidenceGuard {
       countSheetCrossings(m_, moves_, support_, out.lifts, featureOf_, longestInputEdge_,
                           features_);
     out.verdicts = featureVerdicts(moves_.plan(), features_, featureOf_, stats.medianLift, surface_,
-                                   opt_, exactSampling_);
+                                   opt_, exactSampling_, held_.vertex);
     stats.verdicts = countVerdicts(out.verdicts);
     for (std::size_t c = 0; c < features_.size(); ++c) {
       if (!out.left(c) || features_[c].moved == 0) continue;
@@ -775,6 +785,7 @@ class EvidenceGuard {
   SurfaceMeasures surface_;
   double longestInputEdge_;
   const SharpenOptions &opt_;
+  const HeldFaces &held_;
   std::vector<Feature> features_;
   std::vector<std::uint32_t> featureOf_;
   bool exactSampling_ = false;  ///< sampledExactly, set by judge()

@@ -68,12 +68,14 @@ std::size_t countNonManifoldVertices(MeshType &m) {
 
 /// Returns "" when `m` can be processed, else a one-line reason. Refuses:
 /// no faces (empty or point cloud), non-finite coordinates, faces that repeat
-/// a vertex, non-manifold edges or vertices, inconsistent orientation.
-/// Boundaries (open meshes) and several components are accepted.
+/// a vertex, inconsistent orientation (of the faces that share an edge two by
+/// two). Boundaries (open meshes), several components and non-manifold
+/// vertices and edges are accepted (held as they came: util/non_manifold.h);
+/// `nonManifold`, when given, tells whether there are any.
 /// \pre m has FF adjacency and no deleted elements. Rebuilds FF topology
 ///      (fast_topology.h); leaves every flag as it was.
 template <class MeshType>
-std::string findInputProblem(MeshType &m) {
+std::string findInputProblem(MeshType &m, bool *nonManifold) {
   vcg::tri::RequireFFAdjacency(m);
   if (m.vn != int(m.vert.size()) || m.fn != int(m.face.size()))
     return "mesh has deleted elements; compact it first";
@@ -105,22 +107,21 @@ std::string findInputProblem(MeshType &m) {
   if (firstRepeat < faceCount)
     return "face " + std::to_string(firstRepeat) +
            " repeats a vertex (remove duplicated vertices/faces first)";
-  // An edge is manifold when its FF ring has at most two faces; the first
-  // face (lowest index) with a non-manifold edge is named. The FF build
-  // finds both that and the orientation while it matches the edges. (Not
+  // An edge is manifold when its FF ring has at most two faces. The FF
+  // build finds that and the orientation while it matches the edges. (Not
   // Clean::CountNonManifoldEdgeFF: it takes face bit flags it never returns,
   // which inside MeshLab are shared with every other filter.)
   const FaceFaceDiagnostics edges = buildFaceFace(m);
-  const std::size_t nf = m.face.size(), firstNonManifold = edges.firstNonManifoldFace;
-  if (firstNonManifold < nf)
-    return "mesh has non-manifold edges (three or more faces on an edge, e.g. at face " +
-           std::to_string(firstNonManifold) +
-           "); repair them first (MeshLab: Repair non Manifold Edges)";
-  if (std::size_t n = detail::countNonManifoldVertices(m))
-    return "mesh has " + std::to_string(n) +
-           " non-manifold vertices; repair them first (MeshLab: Repair non Manifold Vertices)";
+  const bool spots =
+      edges.firstNonManifoldFace < m.face.size() || detail::countNonManifoldVertices(m) > 0;
+  if (nonManifold) *nonManifold = spots;
   if (edges.misoriented) return "faces are not consistently oriented (re-orient the mesh first)";
   return "";
+}
+
+template <class MeshType>
+std::string findInputProblem(MeshType &m) {
+  return findInputProblem(m, nullptr);
 }
 
 }  // namespace edge_sharpener
