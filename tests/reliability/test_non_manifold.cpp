@@ -2,8 +2,8 @@
 // vertex or edge come out exactly as they came, the features away from them
 // are sharpened exactly as on the clean mesh, and every invariant holds.
 #include <gtest/gtest.h>
-#include <vcg/complex/append.h>
 #include <vcg/complex/complex.h>
+// (append.h is included by complex.h)
 
 #include <limits>
 #include <set>
