@@ -44,6 +44,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
       {"input",
        {{"vertices", r.inputVertices},
         {"faces", r.inputFaces},
+        {"border_edges", r.inputBorderEdges},
         {"longest_edge", r.longestInputEdge}}},
       {"output", {{"vertices", r.outputVertices}, {"faces", r.outputFaces}}},
       {"geometry_changed", r.geometryChanged},

@@ -26,6 +26,7 @@ parser.add_argument("--source", required=True)
 args = parser.parse_args(argv)
 sys.path.insert(0, str(pathlib.Path(args.source) / "python" / "tests"))
 from ply import read_ply  # noqa: E402
+from spots import spot_faces  # noqa: E402
 
 addon_path = pathlib.Path(args.addon)
 if addon_path.suffix == ".zip":
@@ -169,19 +170,34 @@ check_shape("cube", (cube_vertices, cube_triangles), 0.1)
 lblock = read_ply(pathlib.Path(args.source) / "test_meshes" / "generated" / "lblock_reference.ply")
 check_shape("lblock", (lblock["vertices"].astype(float) @ turn.T, lblock["faces"]), 0.04)
 
-# Refusal: three triangles on one edge. The operator reports why and leaves the mesh alone.
-fan = new_object("fan", [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1]],
-                 [[0, 1, 2], [1, 0, 3], [0, 1, 4]])
-bpy.ops.ed.undo_push(message="fan")
+# Refusal: a tetrahedron with one face flipped. The operator reports why and leaves the mesh alone.
+tet = new_object("flipped", [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
+                 [[0, 1, 2], [0, 1, 3], [1, 2, 3], [0, 3, 2]])
+bpy.ops.ed.undo_push(message="flipped")
 try:
     sharpen()
 except RuntimeError as error:  # bpy.ops raises the operator's ERROR report
     message = str(error)
 else:
-    raise AssertionError("a non-manifold mesh was not refused")
+    raise AssertionError("an inconsistently oriented mesh was not refused")
 print(f"refusal report: {message.strip()}")
-assert "Edge-Sharpener refused the mesh" in message and "non-manifold" in message, message
-assert len(bpy.data.objects["fan"].data.polygons) == 3
+assert "Edge-Sharpener refused the mesh" in message and "oriented" in message, message
+assert len(bpy.data.objects["flipped"].data.polygons) == 4
+
+# Non-manifold spots: the L-block with a non-manifold vertex and edge is sharpened, the
+# faces at the spots as they came (the same vertex indices, the same positions).
+spotted = read_ply(pathlib.Path(args.source) / "test_meshes" / "generated" / "lblock_mc2_spots.ply")
+new_object("spots", spotted["vertices"], spotted["faces"])
+bpy.ops.ed.undo_push(message="spots")
+assert sharpen() == {"FINISHED"}
+spots_mesh = bpy.data.objects["spots"].data
+spots_v = np.array([v.co[:] for v in spots_mesh.vertices], dtype=np.float32)
+spots_f = np.array([p.vertices[:] for p in spots_mesh.polygons])
+held = spot_faces(spotted["vertices"], spotted["faces"])
+assert held and spot_faces(spots_v, spots_f) == held, "a face at a non-manifold spot changed"
+assert (spots_v[:len(spotted["vertices"])] == spotted["vertices"]).all()
+assert len(spots_f) > len(spotted["faces"]), "nothing was sharpened"
+print(f"non-manifold spots: {len(held)} faces as they came, {len(spotted['faces'])} -> {len(spots_f)} faces")
 
 # A point colour attribute (the voxel remesher keeps one with Preserve Color
 # Attributes) survives: the original vertices keep their colours, each new

@@ -9,7 +9,9 @@ import numpy as np
 import pytest
 
 import edge_sharpener as es
-from conftest import sample
+from conftest import SAMPLES, sample
+from ply import read_ply
+from spots import spot_faces
 
 # An octahedron, consistently oriented (outward normals).
 OCTAHEDRON_V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]],
@@ -247,13 +249,52 @@ BAD_INPUTS = {
     "huge unsigned index": ((OCTAHEDRON_V, np.where(OCTAHEDRON_F == 5, np.uint64(2**64 - 1), OCTAHEDRON_F.astype(np.uint64))), "vertex index 18446744073709551615 out of range"),
     "NaN": (with_value(3, 1, np.nan), "vertex 3 has a NaN or infinite coordinate"),
     "infinity float32": (with_value(2, 0, np.inf, np.float32), "vertex 2 has a NaN or infinite coordinate"),
-    "non-manifold edge": (non_manifold_edge(), "mesh has non-manifold edges"),
-    "non-manifold vertex": (non_manifold_vertex(), "mesh has 1 non-manifold vertices"),
     "misoriented": (flipped_face(), "faces are not consistently oriented"),
     "repeated vertex": ((OCTAHEDRON_V, np.array([[0, 0, 1]])), "face 0 repeats a vertex"),
     "empty": ((np.zeros((0, 3)), np.zeros((0, 3), int)), "mesh is empty"),
     "no faces": ((OCTAHEDRON_V, np.zeros((0, 3), int)), "mesh has no faces"),
 }
+
+
+def spotted_mesh(mesh):
+    if mesh == "spots":
+        m = read_ply(SAMPLES / "lblock_mc2_spots.ply")
+        return m["vertices"], m["faces"]
+    return non_manifold_edge() if mesh == "fin" else non_manifold_vertex()
+
+
+@pytest.mark.parametrize("mesh", ["spots", "fin", "two tetrahedra"])
+def test_non_manifold_spots_are_held_as_they_came(mesh):
+    """Faces at a non-manifold vertex or edge come out as they came (same vertex indices,
+    identical positions); the rest is sharpened as on the clean mesh; the report says
+    where they are."""
+    vertices, faces = spotted_mesh(mesh)
+    copies = frozen_copies(vertices, faces)
+    out_v, out_f, report = es.sharpen(vertices, faces)
+    assert_unchanged([vertices, faces], copies)
+    held = spot_faces(vertices, faces)
+    assert held and spot_faces(out_v, out_f) == held
+    assert (out_v[:len(vertices)] == vertices).all()
+    assert report["non_manifold"]["held_faces"] >= len(held)
+    assert "non-manifold: " in report["input_notes"]
+    if mesh == "spots":
+        clean = read_ply(SAMPLES / "lblock_mc2.ply")
+        clean_v, _, clean_report = es.sharpen(clean["vertices"], clean["faces"])
+        n = len(clean["vertices"])
+        assert (out_v[:n] == clean_v[:n]).all()
+        verdicts = report["evidence"]["verdicts"]
+        assert verdicts["at_non_manifold_spot"] >= 1
+        assert 0 < verdicts["restored"] < clean_report["evidence"]["verdicts"]["restored"]
+
+
+@pytest.mark.parametrize("mesh", ["spots", "fin", "two tetrahedra"])
+def test_detect_leaves_non_manifold_spots_unlabelled(mesh):
+    vertices, faces = spotted_mesh(mesh)
+    labels = es.detect(vertices, faces)
+    assert len(labels) == len(faces)
+    held = spot_faces(vertices, faces)
+    at_spots = [i for i, f in enumerate(faces) if tuple(sorted(map(int, f))) in held]
+    assert all(es.FACE_LABELS[labels[i]] not in ("chamfer", "corner") for i in at_spots)
 
 
 @pytest.mark.parametrize("function", [es.sharpen, es.detect])

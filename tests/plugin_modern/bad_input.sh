@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# In MeshLab 2022.02 a point cloud, a non-manifold mesh and a negative smooth-edge
+# In MeshLab 2022.02 a point cloud, an inconsistently oriented mesh and a negative smooth-edge
 # multiplier end in a filter error (MLException: non-zero exit, reason in the log),
 # never a crash, and the mesh is left as it was (saved with --save-on-error and
 # compared with the input: same geometry, no colour layer added).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 "$ES_TEST_TOOL" make-pointcloud pointcloud.ply
-"$ES_TEST_TOOL" make-nonmanifold nonmanifold.ply
+"$ES_TEST_TOOL" make-misoriented misoriented.ply
 "$ES_TEST_TOOL" make-lblock lblock.ply
 sed 's/name="smoothMultiplier" type="RichFloat" value="2"/name="smoothMultiplier" type="RichFloat" value="-1"/' \
   "$SCRIPTS/sharpen.mlx" >negative_multiplier.mlx
@@ -31,7 +31,7 @@ refused() {
 
 for script in sharpen detect; do
   refused "pointcloud.$script" pointcloud.ply "$SCRIPTS/$script.mlx" "Edge-Sharpener cannot process this mesh"
-  refused "nonmanifold.$script" nonmanifold.ply "$SCRIPTS/$script.mlx" "Edge-Sharpener cannot process this mesh"
+  refused "misoriented.$script" misoriented.ply "$SCRIPTS/$script.mlx" "Edge-Sharpener cannot process this mesh"
 done
 refused negative_multiplier lblock.ply "$ES_WORK_DIR/negative_multiplier.mlx" "Edge-Sharpener cannot run"
 

@@ -164,3 +164,29 @@ TEST(NonManifoldSpots, TwoSpotsInOneMeshAreEachHeld) {
 }
 
 }  // namespace
+
+namespace {
+
+// A mesh oriented inward as a whole (every face flipped) is sharpened to the same
+// surface, and keeps its orientation: the placement reads planes, not sides.
+TEST(MeshesPeopleHave, InwardOrientedMeshIsSharpenedToTheSameSurface) {
+  es::Mesh outward, inward;
+  copy(outward, cleanLBlock());
+  copy(inward, cleanLBlock());
+  for (auto &f : inward.face) std::swap(f.V(1), f.V(2));
+  for (const es::Method method : {es::Method::Paper, es::Method::Extended, es::Method::Auto}) {
+    SCOPED_TRACE(int(method));
+    es::Mesh a, b;
+    sharpenCopy(outward, a, method);
+    sharpenCopy(inward, b, method);
+    ASSERT_EQ(a.vert.size(), b.vert.size());
+    const std::size_t n = outward.vert.size();
+    for (std::size_t v = 0; v < n; ++v) EXPECT_EQ(a.vert[v].cP(), b.vert[v].cP()) << v;
+    // The new vertices come in another order (each face's edges are walked the other way).
+    EXPECT_EQ(insertedPositions(a, n), insertedPositions(b, n));
+    EXPECT_GT(shapes::signedVolume(a), 0);
+    EXPECT_LT(shapes::signedVolume(b), 0);
+  }
+}
+
+}  // namespace

@@ -144,6 +144,7 @@ struct NonManifoldStats {
 
 struct SharpenReport {
   std::size_t inputVertices = 0, inputFaces = 0;
+  std::size_t inputBorderEdges = 0;  ///< edges of the input with one face (open borders)
   std::size_t outputVertices = 0, outputFaces = 0;
   double longestInputEdge = 0;
   SmoothEdgeStats smooth;
@@ -328,8 +329,8 @@ inline std::string formatInputNotes(const SharpenReport &r) {
     s << "non-manifold: " << n.edges << (n.edges == 1 ? " edge, " : " edges, ") << n.vertices
       << (n.vertices == 1 ? " vertex" : " vertices") << "; the " << n.heldFaces
       << " faces there left as they came (the first: face " << n.firstHeldFace << ")";
-  if (r.smooth.boundaryEdges > 0)
-    s << (n.vertices > 0 ? "; " : "") << "open: " << r.smooth.boundaryEdges
+  if (r.inputBorderEdges > 0)
+    s << (n.vertices > 0 ? "; " : "") << "open: " << r.inputBorderEdges
       << " border edges, their vertices kept where they are";
   return s.str();
 }

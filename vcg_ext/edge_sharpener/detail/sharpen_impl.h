@@ -170,6 +170,8 @@ SharpenReport validate(MeshType &m, const SharpenOptions &opt, bool *nonManifold
   report.inputVertices = m.vert.size();
   report.inputFaces = m.face.size();
   report.longestInputEdge = longestEdgeLength(m);
+  for (const auto &f : m.face)  // FF topology as findInputProblem() built it
+    for (int i = 0; i < 3; ++i) report.inputBorderEdges += f.cFFp(i) == &f;
   return report;
 }
 
