@@ -53,6 +53,7 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
         {"vertices", r.nonManifold.vertices},
         {"held_faces", r.nonManifold.heldFaces},
         {"first_held_face", r.nonManifold.firstHeldFace}}},
+      {"parts", {{"parts", r.parts}, {"rescaled", r.partsRescaled}}},
       {"smooth_edges",
        {{"edges", r.smooth.edges},
         {"boundary", r.smooth.boundaryEdges},

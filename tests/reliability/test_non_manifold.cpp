@@ -190,3 +190,47 @@ TEST(MeshesPeopleHave, InwardOrientedMeshIsSharpenedToTheSameSurface) {
 }
 
 }  // namespace
+
+namespace {
+
+// Two parts sampled at spacings ten times apart (the L-block, and the L-block ten
+// times larger beside it, its samples ten times apart too): each is sharpened as
+// it is alone, not at a spacing between the two.
+TEST(MeshesPeopleHave, PartsAtDifferentSpacingsAreEachSharpenedAtTheirOwn) {
+  es::Mesh small, big, both;
+  copy(small, cleanLBlock());
+  copy(big, cleanLBlock());
+  for (auto &v : big.vert) v.P() = v.P() * 10 + vcg::Point3f(30, 0, 0);
+  copy(both, small);
+  vcg::tri::Append<es::Mesh, es::Mesh>::Mesh(both, big);
+  es::Mesh smallOut, bigOut, bothOut, bothIn;
+  const es::SharpenReport rs = sharpenCopy(small, smallOut, es::Method::Auto);
+  const es::SharpenReport rb = sharpenCopy(big, bigOut, es::Method::Auto);
+  copy(bothIn, both);
+  const es::SharpenReport r = sharpenCopy(both, bothOut, es::Method::Auto);
+  EXPECT_EQ(r.parts, 2u);
+  EXPECT_EQ(r.partsRescaled, 1u);
+  EXPECT_EQ(r.evidence.count(es::Verdict::Restored),
+            rs.evidence.count(es::Verdict::Restored) + rb.evidence.count(es::Verdict::Restored));
+  EXPECT_EQ(
+      es_reliability::sharpenProblem(bothIn, bothOut, r, es::SharpenOptions().degenerateAngleRad),
+      "");
+  // Every new vertex where the run of its part alone put it (within float rounding of
+  // the scaling there and back).
+  const auto smallNew = insertedPositions(smallOut, small.vert.size());
+  const auto bigNew = insertedPositions(bigOut, big.vert.size());
+  ASSERT_EQ(bothOut.vert.size() - both.vert.size(), smallNew.size() + bigNew.size());
+  const double tolerance = 1e-5 * es_reliability::bboxDiagonal(big);
+  for (std::size_t v = both.vert.size(); v < bothOut.vert.size(); ++v) {
+    const es_reliability::P3 p = es_reliability::pos(bothOut.vert[v]);
+    double nearest = std::numeric_limits<double>::max();
+    for (const auto *set : {&smallNew, &bigNew})
+      for (const auto &q : *set)
+        nearest = std::min(
+            nearest,
+            (p - es_reliability::P3(std::get<0>(q), std::get<1>(q), std::get<2>(q))).Norm());
+    EXPECT_LT(nearest, tolerance) << "new vertex " << v;
+  }
+}
+
+}  // namespace

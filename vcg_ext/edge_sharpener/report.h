@@ -160,6 +160,9 @@ struct SharpenReport {
   ExtendedStats extended;        ///< filled by the extended method only
   bool geometryChanged = false;  ///< false for detection-only runs
   NonManifoldStats nonManifold;  ///< the spots held as they came (none: zeros)
+  /// Connected parts, when some were sampled at spacings so different that
+  /// each was sharpened at its own (util/part_scales.h; else both 0).
+  std::size_t parts = 0, partsRescaled = 0;
 };
 
 namespace detail {
@@ -320,8 +323,9 @@ inline std::string formatVerdictSummary(const SharpenReport &r) {
   return s.str();
 }
 
-/// What the input had that the run left as it came, in one line for people
-/// ("" when nothing): its non-manifold spots and its open borders.
+/// What the input had that the run left as it came or handled apart, in one
+/// line for people ("" when nothing): its non-manifold spots, its parts at
+/// other spacings, its open borders.
 inline std::string formatInputNotes(const SharpenReport &r) {
   std::ostringstream s;
   const NonManifoldStats &n = r.nonManifold;
@@ -329,8 +333,11 @@ inline std::string formatInputNotes(const SharpenReport &r) {
     s << "non-manifold: " << n.edges << (n.edges == 1 ? " edge, " : " edges, ") << n.vertices
       << (n.vertices == 1 ? " vertex" : " vertices") << "; the " << n.heldFaces
       << " faces there left as they came (the first: face " << n.firstHeldFace << ")";
+  if (r.partsRescaled > 0)
+    s << (n.vertices > 0 ? "; " : "") << "parts: " << r.parts << ", " << r.partsRescaled
+      << " of them sampled at other spacings than the largest, each sharpened at its own";
   if (r.inputBorderEdges > 0)
-    s << (n.vertices > 0 ? "; " : "") << "open: " << r.inputBorderEdges
+    s << (n.vertices > 0 || r.partsRescaled > 0 ? "; " : "") << "open: " << r.inputBorderEdges
       << " border edges, their vertices kept where they are";
   return s.str();
 }

@@ -4,6 +4,7 @@
 
 #include <vcg/complex/complex.h>
 
+#include <optional>
 #include <type_traits>
 #include <vector>
 // (vcglib's algorithm headers need complex.h first)
@@ -25,6 +26,7 @@
 #include "../util/fast_topology.h"
 #include "../util/input_check.h"
 #include "../util/non_manifold.h"
+#include "../util/part_scales.h"
 
 namespace edge_sharpener {
 
@@ -158,7 +160,7 @@ void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt
 
 /// Checks the mesh and the options (InputError otherwise, the mesh
 /// untouched); the report's input counts. `nonManifold` tells whether the
-/// mesh has non-manifold spots (held as they came: holdingNonManifoldSpots).
+/// mesh has non-manifold spots (held as they came: asPeopleHaveIt).
 template <class MeshType>
 SharpenReport validate(MeshType &m, const SharpenOptions &opt, bool *nonManifold = nullptr) {
   vcg::tri::RequireFFAdjacency(m);
@@ -175,26 +177,42 @@ SharpenReport validate(MeshType &m, const SharpenOptions &opt, bool *nonManifold
   return report;
 }
 
-/// Runs `pipeline(held, report)` on `m`. A mesh with non-manifold spots is
+/// Runs `pipeline(held, report)` on `m`: the mesh as people have it made one
+/// the pipelines take, and put back after. A mesh with non-manifold spots is
 /// cut loose there first (NonManifoldCut): the pipeline sees a 2-manifold
 /// mesh whose faces at the spots are held; afterwards they are welded back,
-/// so the output has the input's non-manifold vertices and edges.
+/// so the output has the input's non-manifold vertices and edges. Parts
+/// sampled at different spacings are each brought to one (PartScales).
 template <class MeshType, class Pipeline>
-SharpenReport holdingNonManifoldSpots(MeshType &m, const SharpenOptions &opt, Pipeline &&pipeline) {
+SharpenReport asPeopleHaveIt(MeshType &m, const SharpenOptions &opt, Pipeline &&pipeline) {
   bool nonManifold = false;
   SharpenReport report = validate(m, opt, &nonManifold);
-  if (!nonManifold) return pipeline(HeldFaces{}, report);
-  NonManifoldCut<MeshType> cut(m);
-  if (!cut.manifold()) {
-    cut.weld();
-    throw InputError(
-        "mesh has non-manifold spots too tangled to hold apart; repair them first (MeshLab: "
-        "Repair non Manifold Edges, then Vertices)");
+  std::optional<NonManifoldCut<MeshType>> cut;
+  if (nonManifold) {
+    cut.emplace(m);
+    if (!cut->manifold()) {
+      cut->weld();
+      throw InputError(
+          "mesh has non-manifold spots too tangled to hold apart; repair them first (MeshLab: "
+          "Repair non Manifold Edges, then Vertices)");
+    }
   }
-  report = pipeline(cut.held(), report);
-  cut.weld();
+  PartScales<MeshType> parts(m);
+  if (!cut && parts.rescaled() == 0) return pipeline(HeldFaces{}, report);
+  const std::size_t borderEdges = report.inputBorderEdges;
+  const double longestEdge = report.longestInputEdge;
+  if (parts.rescaled() > 0) report.longestInputEdge = longestEdgeLength(m);  // as the run sees it
+  report = pipeline(cut ? cut->held() : HeldFaces{}, report);
+  report.longestInputEdge = longestEdge;
+  parts.restore();
+  if (cut) {
+    cut->weld();
+    report.nonManifold = cut->stats();
+  }
+  report.inputBorderEdges = borderEdges;
+  report.parts = parts.parts();
+  report.partsRescaled = parts.rescaled();
   if (report.geometryChanged) updateOutputNormals(m);
-  report.nonManifold = cut.stats();
   report.outputVertices = m.vert.size();
   report.outputFaces = m.face.size();
   return report;
@@ -291,7 +309,7 @@ SharpenReport sharpenAuto(MeshType &m, const SharpenOptions &opt, const HeldFace
 
 template <class MeshType>
 SharpenReport detectChamfers(MeshType &m, const SharpenOptions &opt) {
-  return detail::holdingNonManifoldSpots(m, opt, [&](const HeldFaces &held, SharpenReport report) {
+  return detail::asPeopleHaveIt(m, opt, [&](const HeldFaces &held, SharpenReport report) {
     MeshLabels<MeshType> labels(m);
     if (opt.method == Method::Paper)
       detail::detectByFilters(m, labels, opt, report);
@@ -313,7 +331,7 @@ SharpenReport sharpen(MeshType &m, const SharpenOptions &opt) {
   const auto pipeline = opt.method == Method::Paper      ? detail::sharpenPaper<MeshType>
                         : opt.method == Method::Extended ? detail::sharpenExtended<MeshType>
                                                          : detail::sharpenAuto<MeshType>;
-  return detail::holdingNonManifoldSpots(m, opt, [&](const HeldFaces &held, SharpenReport report) {
+  return detail::asPeopleHaveIt(m, opt, [&](const HeldFaces &held, SharpenReport report) {
     return pipeline(m, opt, held, std::move(report));
   });
 }
