@@ -68,7 +68,6 @@ class PartScales {
       spacing[p] = edges[p][edges[p].size() / 2];
     }
     scale_.assign(parts_, 1.0);
-    bool differ = false;
     for (std::size_t p = 0; p < parts_; ++p) {
       if (faces[p] < kMinPartFaces || !(spacing[p] > 0) || !(spacing[largest] > 0)) continue;
       const double ratio = spacing[largest] / spacing[p];
