@@ -234,3 +234,28 @@ TEST(MeshesPeopleHave, PartsAtDifferentSpacingsAreEachSharpenedAtTheirOwn) {
 }
 
 }  // namespace
+
+namespace {
+
+// Detect selects what the report counts: the chamfer and corner faces left after the
+// faces at the spots are held (MeshLab's detect test reads the two from the log).
+TEST(NonManifoldSpots, DetectSelectsWhatTheReportCounts) {
+  es::Mesh input;
+  copy(input, cleanLBlock());
+  const std::size_t on = shapes::spotVertex(input, SpotPlace::OnChamfer);
+  shapes::addSpot(input, SpotKind::Edge, on);
+  for (const es::Method method : {es::Method::Paper, es::Method::Auto}) {
+    SCOPED_TRACE(int(method));
+    es::Mesh m;
+    copy(m, input);
+    es::SharpenOptions opt;
+    opt.method = method;
+    const es::SharpenReport r = es::detectChamfers(m, opt);
+    std::size_t selected = 0;
+    for (const auto &f : m.face) selected += f.IsS();
+    EXPECT_GT(r.nonManifold.heldFaces, 0u);
+    EXPECT_EQ(selected, r.filters.chamferFaces + r.filters.cornerFaces);
+  }
+}
+
+}  // namespace

@@ -3,10 +3,13 @@
 // placement their vertices go back to rest, so no move does.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <vector>
 
 #include "guards/vertex_moves.h"
 #include "labels.h"
+#include "report.h"
 #include "util/mesh_labels.h"
 #include "util/non_manifold.h"
 
@@ -15,10 +18,12 @@ namespace edge_sharpener {
 /// Stage after detection: no held face is split. A held face loses its
 /// chamfer or corner label and its chamfer edges (on both sides); a
 /// neighbour that lost a chamfer edge is labelled again by the chamfer edges
-/// it keeps (none: not split; three: a corner). \return the chamfer edges
-/// cleared.
+/// it keeps (none: not split; three: a corner). The detection's counts in
+/// `filters` follow (the report then counts what will be split and what
+/// Detect selects). \return the chamfer edges cleared.
 template <class MeshType>
-std::size_t holdFaces(MeshType &m, MeshLabels<MeshType> &labels, const HeldFaces &held) {
+std::size_t holdFaces(MeshType &m, MeshLabels<MeshType> &labels, const HeldFaces &held,
+                      FilterStats &filters) {
   if (held.empty()) return 0;
   std::size_t cleared = 0;
   std::vector<typename MeshType::FacePointer> touched;
@@ -45,6 +50,12 @@ std::size_t holdFaces(MeshType &m, MeshLabels<MeshType> &labels, const HeldFaces
     labels.face[g] = chamferEdges == 0   ? FaceLabel::Gray
                      : chamferEdges == 3 ? FaceLabel::Corner
                                          : FaceLabel::Chamfer;
+  }
+  filters.chamferEdges -= std::min(filters.chamferEdges, cleared);
+  filters.chamferFaces = filters.cornerFaces = 0;
+  for (auto &f : m.face) {
+    filters.chamferFaces += labels.face[&f] == FaceLabel::Chamfer;
+    filters.cornerFaces += labels.face[&f] == FaceLabel::Corner;
   }
   return cleared;
 }

@@ -238,7 +238,7 @@ SharpenReport sharpenPaper(MeshType &m, const SharpenOptions &opt, const HeldFac
   report.geometryChanged = true;
   MeshLabels<MeshType> labels(m);
   const SupportPlanes support = detectByFilters(m, labels, opt, report);
-  holdFaces(m, labels, held);
+  holdFaces(m, labels, held, report.filters);
   reportProgress(opt, 40, "Edge-Sharpener: subdivision");
   const SplitPlan plan = planSplits(m, labels);
   report.subdivision = subdivide(m, plan, labels);
@@ -258,7 +258,7 @@ SharpenReport sharpenExtended(MeshType &m, const SharpenOptions &opt, const Held
   report.geometryChanged = true;
   MeshLabels<MeshType> labels(m);
   const FeatureZones zones = detectByZones(m, labels, opt, report);
-  holdFaces(m, labels, held);
+  holdFaces(m, labels, held, report.filters);
   reportProgress(opt, 40, "Edge-Sharpener: subdivision");
   const SplitPlan plan = planSplits(m, labels);
   report.subdivision = subdivide(m, plan, labels);
@@ -280,7 +280,7 @@ SharpenReport sharpenAuto(MeshType &m, const SharpenOptions &opt, const HeldFace
   report.geometryChanged = true;
   MeshLabels<MeshType> labels(m);
   const FeatureZones zones = detectByZones(m, labels, opt, report);
-  holdFaces(m, labels, held);
+  holdFaces(m, labels, held, report.filters);
   reportProgress(opt, 40, "Edge-Sharpener: subdivision");
   AutoMethod<MeshType> autoMethod(m, zones, opt, held);
   const SplitPlan plan = planSplits(m, labels);
@@ -315,7 +315,7 @@ SharpenReport detectChamfers(MeshType &m, const SharpenOptions &opt) {
       detail::detectByFilters(m, labels, opt, report);
     else
       detail::detectByZones(m, labels, opt, report);
-    holdFaces(m, labels, held);
+    holdFaces(m, labels, held, report.filters);
     colorize(m, labels);
     selectChamferFaces(m, labels);
     report.outputVertices = m.vert.size();
