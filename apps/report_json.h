@@ -28,8 +28,7 @@ inline nlohmann::json optionsToJson(const SharpenOptions &opt) {
 /// The report as JSON: each stage's counts; "evidence" (the auto method) with
 /// "verdicts", {verdict name: features}, every verdict; "summary", the line
 /// formatVerdictSummary() writes; "input_notes", formatInputNotes()'s ("" when
-/// nothing to say);
-/// formatVerdictSummary() writes.
+/// nothing to say).
 inline nlohmann::json reportToJson(const SharpenReport &r) {
   nlohmann::json placement = {{"moved", r.placement.moved()},
                               {"fallbacks", r.placement.fallbacks()},

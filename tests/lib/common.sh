@@ -50,3 +50,13 @@ sharpen_variants() {
     "$mlx" >sharpen_extended.mlx
   grep -q 'name="method" type="RichEnum" value="1"' sharpen_extended.mlx || fail "cannot derive sharpen_extended.mlx"
 }
+
+# check_spots_kept INPUT OUTPUT LOG: every face of INPUT at a non-manifold spot is in
+# OUTPUT as it came (plugin_test_tool spot-faces) and LOG reports the spots.
+check_spots_kept() {
+  local in=$1 out=$2 log_file=$3 name=${2%.ply}
+  "$ES_TEST_TOOL" spot-faces "$in" "$out" >"$name.spots" ||
+    { cat "$name.spots"; fail "$name: a face at a non-manifold spot changed"; }
+  grep -q 'non-manifold: ' "$log_file" || { cat "$log_file" >&2; fail "$name: the log does not report the spots"; }
+  log "$name: $(cat "$name.spots"); $(grep -m1 -o 'non-manifold: .*' "$log_file")"
+}

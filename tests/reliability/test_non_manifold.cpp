@@ -102,8 +102,12 @@ TEST_P(NonManifoldSpot, FeaturesAwayAreSharpenedAsOnTheCleanMesh) {
     ASSERT_EQ(out.vert[v].cP(), cleanOut.vert[v].cP()) << "vertex " << v;
   const auto inserted = insertedPositions(out, input.vert.size());
   const auto cleanInserted = insertedPositions(cleanOut, clean.vert.size());
-  if (place == SpotPlace::OnChamfer) EXPECT_GE(atSpot, 1u);
-  if (place == SpotPlace::FarFromChamfers) EXPECT_EQ(atSpot, 0u);
+  if (place == SpotPlace::OnChamfer) {
+    EXPECT_GE(atSpot, 1u);
+  }
+  if (place == SpotPlace::FarFromChamfers) {
+    EXPECT_EQ(atSpot, 0u);
+  }
   if (atSpot == 0) {
     EXPECT_EQ(restored, cleanRestored);
     EXPECT_EQ(inserted, cleanInserted);

@@ -20,11 +20,11 @@ namespace edge_sharpener {
 /// neighbour that lost a chamfer edge is labelled again by the chamfer edges
 /// it keeps (none: not split; three: a corner). The detection's counts in
 /// `filters` follow (the report then counts what will be split and what
-/// Detect selects). \return the chamfer edges cleared.
+/// Detect selects).
 template <class MeshType>
-std::size_t holdFaces(MeshType &m, MeshLabels<MeshType> &labels, const HeldFaces &held,
-                      FilterStats &filters) {
-  if (held.empty()) return 0;
+void holdFaces(MeshType &m, MeshLabels<MeshType> &labels, const HeldFaces &held,
+               FilterStats &filters) {
+  if (held.empty()) return;
   std::size_t cleared = 0;
   std::vector<typename MeshType::FacePointer> touched;
   for (std::size_t fi = 0; fi < m.face.size(); ++fi) {
@@ -57,20 +57,15 @@ std::size_t holdFaces(MeshType &m, MeshLabels<MeshType> &labels, const HeldFaces
     filters.chamferFaces += labels.face[&f] == FaceLabel::Chamfer;
     filters.cornerFaces += labels.face[&f] == FaceLabel::Corner;
   }
-  return cleared;
 }
 
 /// Stage after placement: every vertex of a held face that placement moved
-/// goes back to rest. \return how many did.
+/// goes back to rest.
 template <class MeshType>
-std::size_t sendBackHeldVertices(VertexMoves<MeshType> &moves, const HeldFaces &held) {
-  std::size_t count = 0;
+void sendBackHeldVertices(VertexMoves<MeshType> &moves, const HeldFaces &held) {
   for (std::size_t v = 0; v < held.vertex.size() && v < moves.firstInserted(); ++v)
-    if (held.vertex[v] && moves.hasRest(v) && moves.isMoved(v)) {
+    if (held.pins(v) && moves.hasRest(v) && moves.isMoved(v))
       moves.sendBack(v, Placement::Original);
-      ++count;
-    }
-  return count;
 }
 
 }  // namespace edge_sharpener

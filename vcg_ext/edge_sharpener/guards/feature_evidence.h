@@ -530,7 +530,7 @@ inline bool meshEvidenceIsWeak(double refused, double lift, const SurfaceMeasure
 /// moves' median `lift`), else its own (judgeFeature, on a mesh sampled
 /// exactly or not); a corner one of whose edges is left, CornerOfWeakEdge (a
 /// corner is where its edges meet); a feature one of whose new vertices lies
-/// on an edge from a `pinned` vertex (a vertex of a face held at a
+/// on an edge from a vertex `held` pins (a vertex of a face held at a
 /// non-manifold spot), AtNonManifoldSpot (restoring it would bend that face);
 /// and, on a mesh sampled exactly and mostly
 /// sharp already, a feature whose own moves slide along it, AlreadySharp
@@ -541,15 +541,15 @@ inline std::vector<Verdict> featureVerdicts(const SplitPlan &plan,
                                             const std::vector<std::uint32_t> &featureOf,
                                             double lift, const SurfaceMeasures &surface,
                                             const SharpenOptions &opt, bool exactSampling = false,
-                                            const std::vector<char> &pinned = {}) {
+                                            const HeldFaces &held = {}) {
   if (meshEvidenceIsWeak(refusedFraction(features), lift, surface, opt, exactSampling))
     return std::vector<Verdict>(features.size(), Verdict::MeshEvidenceWeak);
   std::vector<Verdict> verdict(features.size());
   for (std::size_t c = 0; c < features.size(); ++c)
     verdict[c] = judgeFeature(features[c], opt, exactSampling);
-  for (std::size_t k = 0; k < plan.inserted.size() && !pinned.empty(); ++k)
+  for (std::size_t k = 0; k < plan.inserted.size() && !held.empty(); ++k)
     for (int i = 0; i < plan.inserted[k].originalCount; ++i)
-      if (plan.inserted[k].original[i] < pinned.size() && pinned[plan.inserted[k].original[i]])
+      if (held.pins(plan.inserted[k].original[i]))
         verdict[featureOf[k]] = Verdict::AtNonManifoldSpot;
   // An edge feature's weakness reaches the corner features around its sources;
   // an edge already sharp is no evidence against the corner it runs into.
@@ -659,7 +659,7 @@ class EvidenceGuard {
       countSheetCrossings(m_, moves_, support_, out.lifts, featureOf_, longestInputEdge_,
                           features_);
     out.verdicts = featureVerdicts(moves_.plan(), features_, featureOf_, stats.medianLift, surface_,
-                                   opt_, exactSampling_, held_.vertex);
+                                   opt_, exactSampling_, held_);
     stats.verdicts = countVerdicts(out.verdicts);
     for (std::size_t c = 0; c < features_.size(); ++c) {
       if (!out.left(c) || features_[c].moved == 0) continue;

@@ -10,12 +10,11 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <numeric>
-#include <string>
 #include <vector>
 
 #include "../report.h"
 #include "attributes.h"
+#include "disjoint_sets.h"
 #include "fast_topology.h"
 
 namespace edge_sharpener {
@@ -31,20 +30,6 @@ struct HeldFaces {
 };
 
 namespace detail {
-
-/// Union-find over face corners (3 * face + corner).
-class CornerSets {
- public:
-  explicit CornerSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  std::uint32_t find(std::uint32_t c) {
-    while (parent_[c] != c) c = parent_[c] = parent_[parent_[c]];
-    return c;
-  }
-  void join(std::uint32_t a, std::uint32_t b) { parent_[find(a)] = find(b); }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
 
 /// Whether face f's edge e is shared by exactly two faces (its FF ring, as
 /// buildFaceFace links it, has two members).
@@ -64,7 +49,7 @@ std::vector<char> nonManifoldVertices(MeshType &m, std::size_t &nonManifoldEdges
                                       std::vector<std::uint32_t> &cornerFan) {
   const std::size_t nf = m.face.size(), nv = m.vert.size();
   std::vector<char> bad(nv, 0);
-  CornerSets corners(3 * nf);
+  DisjointSets corners(3 * nf);  // face corners: 3 * face + corner
   nonManifoldEdges = 0;
   for (std::size_t f = 0; f < nf; ++f) {
     auto *face = &m.face[f];
@@ -123,7 +108,6 @@ class NonManifoldCut {
  public:
   /// \pre m compact, FF enabled, no face repeating a vertex.
   explicit NonManifoldCut(MeshType &m) : m_(m), weldTo_(m, 0) {
-    inputVertices_ = m.vert.size();
     std::vector<char> held(m.face.size(), 0);
     for (int round = 0; round < kMaxRounds; ++round) {
       buildFaceFace(m);
@@ -230,7 +214,6 @@ class NonManifoldCut {
   /// Per vertex: 1 + the index of the vertex a copy welds onto; 0 (what
   /// vcglib gives vertices added later) for every other vertex.
   ScopedVertexAttribute<MeshType, int> weldTo_;
-  std::size_t inputVertices_ = 0;
   bool manifold_ = false;
   NonManifoldStats stats_;
   HeldFaces held_;

@@ -12,8 +12,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <numeric>
+#include <cstdint>
 #include <vector>
+
+#include "disjoint_sets.h"
 
 namespace edge_sharpener {
 
@@ -36,18 +38,14 @@ class PartScales {
   explicit PartScales(MeshType &m) : m_(m), inputVertices_(m.vert.size()) {
     const std::size_t nv = m.vert.size();
     part_.assign(nv, 0);
-    std::vector<std::size_t> parent(nv);
-    std::iota(parent.begin(), parent.end(), 0);
-    const auto root = [&](std::size_t v) {
-      while (parent[v] != v) v = parent[v] = parent[parent[v]];
-      return v;
-    };
+    detail::DisjointSets vertices(nv);
     for (const auto &f : m.face)
       for (int i = 1; i < 3; ++i)
-        parent[root(vcg::tri::Index(m, f.cV(i)))] = root(vcg::tri::Index(m, f.cV(0)));
+        vertices.join(std::uint32_t(vcg::tri::Index(m, f.cV(i))),
+                      std::uint32_t(vcg::tri::Index(m, f.cV(0))));
     std::vector<std::size_t> partOfRoot(nv, kNone);
     for (std::size_t v = 0; v < nv; ++v) {
-      std::size_t &p = partOfRoot[root(v)];
+      std::size_t &p = partOfRoot[vertices.find(std::uint32_t(v))];
       if (p == kNone) p = parts_++;
       part_[v] = p;
     }
