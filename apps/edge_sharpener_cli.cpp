@@ -2,6 +2,7 @@
 //
 //   edge-sharpener IN OUT [options of the option table] [--detect-only]
 //                         [--reference EXACT] [--sharp-edges EDGES.obj]
+//                         [--only-faces FACES.txt | --skip-faces FACES.txt]
 //                         [-v | -q | --json]
 //
 // --help lists the option table's ordinary options, --help-all every option by
@@ -36,7 +37,7 @@ namespace es = edge_sharpener;
 namespace {
 
 struct CliOptions {
-  std::string input, output, reference, sharpEdges;
+  std::string input, output, reference, sharpEdges, onlyFaces, skipFaces;
   bool detectOnly = false, json = false, quiet = false, verbose = false;
   /// One slot per row of the option table: the value given on the command
   /// line (numbers and flags as doubles, choices by name), and whether it was.
@@ -218,6 +219,37 @@ std::size_t writeSharpEdges(const es::Mesh &m, const std::vector<std::uint8_t> &
   return edges.size();
 }
 
+/// --only-faces (`listed` true) selects the faces whose indices the text file
+/// at `path` lists (whitespace-separated, 0-based, `#` starts a comment),
+/// every other face unselected; --skip-faces (`listed` false) selects every
+/// face but those. A list of indices, not a mesh property: any script writes
+/// one (numpy.savetxt), where few tools write a PLY face property.
+void selectFaces(const std::string &path, bool listed, es::Mesh &m) {
+  const std::string option = listed ? "--only-faces" : "--skip-faces";
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(option + ": cannot read " + path);
+  for (auto &f : m.face) listed ? f.ClearS() : f.SetS();
+  std::size_t lineNumber = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++lineNumber;
+    std::istringstream words(line.substr(0, line.find('#')));
+    for (std::string word; words >> word;) {
+      const std::string where = option + ": " + path + " line " + std::to_string(lineNumber);
+      unsigned long long index = 0;
+      try {
+        if (word.find_first_not_of("0123456789") != std::string::npos) throw std::exception();
+        index = std::stoull(word);
+      } catch (...) {
+        throw std::runtime_error(where + ": '" + word + "' is not a face index (0, 1, 2, ...)");
+      }
+      if (index >= m.face.size())
+        throw std::runtime_error(where + ": face " + word + " does not exist (the mesh has " +
+                                 std::to_string(m.face.size()) + " faces)");
+      listed ? m.face[index].SetS() : m.face[index].ClearS();
+    }
+  }
+}
+
 int run(const CliOptions &cli) {
   if (sameFile(cli.input, cli.output))
     throw std::runtime_error("output would overwrite the input file " + cli.input);
@@ -230,6 +262,10 @@ int run(const CliOptions &cli) {
         std::filesystem::path(cli.output).lexically_normal())
       throw std::runtime_error("--sharp-edges and the output are the same file");
   }
+  const bool selection = !cli.onlyFaces.empty() || !cli.skipFaces.empty();
+  if (selection && cli.detectOnly)
+    throw std::runtime_error(std::string(cli.onlyFaces.empty() ? "--skip-faces" : "--only-faces") +
+                             " needs sharpening: --detect-only looks at every face");
   es::io::returnLargeBlocksToTheSystem();  // see capacity_hint.h
   es::Mesh m;
   if (!cli.detectOnly) es::io::reserveForSharpening(cli.input, m);  // see capacity_hint.h
@@ -246,6 +282,10 @@ int run(const CliOptions &cli) {
   }
 
   es::SharpenOptions opt = cli.sharpenOptions();
+  if (selection) {
+    selectFaces(cli.onlyFaces.empty() ? cli.skipFaces : cli.onlyFaces, cli.skipFaces.empty(), m);
+    opt.selectedFacesOnly = true;
+  }
   opt.colorize = opt.colorize || cli.detectOnly;
   constexpr int kProgressFaces = 200000;  // report stages on long runs only
   const bool progressLine = !cli.quiet && !cli.verbose && !cli.json && m.FN() >= kProgressFaces &&
@@ -344,6 +384,16 @@ int main(int argc, char **argv) {
   app.add_option("--sharp-edges", cli.sharpEdges,
                  "also write the restored sharp edges to this OBJ file, as line elements "
                  "(feature lines for a remesher or a modeller)");
+  auto *only = app.add_option("--only-faces", cli.onlyFaces,
+                              "sharpen only within these faces: a text file of face indices "
+                              "(0-based, whitespace-separated, # comments). A feature outside "
+                              "them is left as it came, one they cut is sharpened up to them")
+                   ->check(CLI::ExistingFile);
+  app.add_option("--skip-faces", cli.skipFaces,
+                 "leave these faces as they came (a designed bevel, say): the same file format, "
+                 "every other face selected as with --only-faces")
+      ->check(CLI::ExistingFile)
+      ->excludes(only);
   app.add_flag("-v,--verbose", cli.verbose, "also print what each stage did");
   app.add_flag("-q,--quiet", cli.quiet, "print nothing on success");
   app.add_flag("--json", cli.json, "print the report as JSON instead");

@@ -53,6 +53,8 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
         {"held_faces", r.nonManifold.heldFaces},
         {"first_held_face", r.nonManifold.firstHeldFace}}},
       {"parts", {{"parts", r.parts}, {"rescaled", r.partsRescaled}}},
+      {"selection",
+       {{"selected_faces_only", r.selectedFacesOnly}, {"selected_faces", r.selectedFaces}}},
       {"smooth_edges",
        {{"edges", r.smooth.edges},
         {"boundary", r.smooth.boundaryEdges},

@@ -35,6 +35,8 @@ struct FilterSpec {
   bool tuning;
   SharpenReport (*run)(CMeshO &, const SharpenOptions &);
   bool alwaysColorize;  ///< paints colours whatever the parameters say
+  /// Takes "Affect only selected faces" (SharpenOptions::selectedFacesOnly).
+  bool affectsSelection;
   int postCondition;
 };
 
@@ -63,18 +65,24 @@ inline const std::vector<FilterSpec> &filterTable() {
        "angle are removed.<br>"
        "Needs a triangle mesh (a point cloud is refused and left untouched). Faces at a "
        "non-manifold vertex or edge are left as they came, with the features that reach "
-       "them. The report of every stage is written to the log.",
-       kInSharpen, true, &sharpen<CMeshO>, false,
+       "them. With <i>Affect only selected faces</i>, the faces outside the selection are "
+       "left as they came: a feature wholly outside it is left, one it cuts is sharpened up "
+       "to its border (deselect a designed bevel after <i>Detect Chamfers</i>). The report "
+       "of every stage is written to the log.",
+       kInSharpen, true, &sharpen<CMeshO>, false, true,
        MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE | MeshModel::MM_VERTCOLOR |
            MeshModel::MM_FACECOLOR | MeshModel::MM_FACEFLAGSELECT},
       {"Edge-Sharpener: Detect Chamfers", "detect_chamfers",
        "Runs the detection stages of Edge-Sharpener only (the smooth-edge test and the six "
        "filters of the paper), without changing the geometry: paints the labels into "
        "per-face colour (smooth regions red, chamfer triangles blue, corner triangles green, "
-       "others grey) and selects the chamfer and corner triangles, i.e. the faces that "
-       "<i>Sharpen Chamfered Edges</i> would subdivide.<br>"
-       "Useful to tune the smooth-edge multiplier before sharpening.",
-       kInDetect, false, &detectChamfers<CMeshO>, true,
+       "others grey) and selects the faces that <i>Sharpen Chamfered Edges</i> may change "
+       "(the paper's method: the chamfer and corner triangles it subdivides; the others: "
+       "every face of a feature zone).<br>"
+       "Useful to tune the smooth-edge multiplier before sharpening, and to choose what to "
+       "sharpen: deselect a designed bevel, then sharpen with <i>Affect only selected "
+       "faces</i>.",
+       kInDetect, false, &detectChamfers<CMeshO>, true, false,
        MeshModel::MM_VERTCOLOR | MeshModel::MM_FACECOLOR | MeshModel::MM_FACEFLAGSELECT},
   };
   return table;
@@ -145,6 +153,24 @@ void addParameter(RichParameterList &par, const OptionSpec &spec, Extra... extra
   }
 }
 
+/// MeshLab's name of "Affect only selected faces", as its own filters call it.
+inline QString selectionParameterName() {
+  return "Selected";
+}
+
+/// "Affect only selected faces", for the filters that take it, off by
+/// default; `extra` as addParameter's.
+template <class... Extra>
+void addSelectionParameter(RichParameterList &par, const FilterSpec &f, Extra... extra) {
+  if (!f.affectsSelection) return;
+  par.addParam(RichBool(selectionParameterName(), false, "Affect only selected faces",
+                        "Sharpen only within the selected faces: a feature wholly outside the "
+                        "selection is left as it came, one it cuts is sharpened up to its "
+                        "border; no face outside it moves or is split. Nothing selected: the "
+                        "mesh is left as it is.",
+                        extra...));
+}
+
 /// The number a person entered, from the float MeshLab keeps it as: the
 /// shortest decimal that reads back as that float (0.3f gives 0.3, not
 /// 0.30000001192), so a value means what it means on the command line.
@@ -173,6 +199,8 @@ inline SharpenOptions readOptions(const FilterSpec &f, const RichParameterList &
     }
   }
   if (f.alwaysColorize) opt.colorize = true;
+  if (f.affectsSelection && par.hasParameter(selectionParameterName()))
+    opt.selectedFacesOnly = par.getBool(selectionParameterName());
   return opt;
 }
 

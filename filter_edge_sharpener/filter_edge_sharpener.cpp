@@ -46,8 +46,10 @@ void FilterEdgeSharpenerPlugin::initParameterSet(QAction *action, MeshModel &,
                                                  RichParameterList &par) {
   // The ordinary options only: 2020.09's dialog has no advanced section for
   // each method's tuning (the CLI and Python have it).
-  for (const auto *spec : esm::parametersOf(esm::filterSpec(ID(action)), /*withTuning=*/false))
+  const esm::FilterSpec &filter = esm::filterSpec(ID(action));
+  for (const auto *spec : esm::parametersOf(filter, /*withTuning=*/false))
     esm::addParameter(par, *spec);
+  esm::addSelectionParameter(par, filter);
 }
 
 bool FilterEdgeSharpenerPlugin::applyFilter(QAction *action, MeshDocument &md,

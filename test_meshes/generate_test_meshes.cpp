@@ -1,17 +1,22 @@
 // generate-test-meshes OUTDIR [--cells 0.02,0.01] [--shapes cube,lblock] [--spots]
+//                      [--bevel-faces]
 // Writes <shape>_reference.ply (exact triangulation) and <shape>_mc<percent>.ply (marching
 // cubes with cells of <percent>% of the bounding-box diagonal) as binary PLY; with --spots
 // also <shape>_mc<percent>_spots.ply, the same with two non-manifold spots added
-// (non_manifold_spots.h): a vertex near a chamfer and an edge on one.
+// (non_manifold_spots.h): a vertex near a chamfer and an edge on one; with --bevel-faces,
+// for bevelled_block, <shape>_mc<percent>_bevel.txt, the indices of the faces on its wide
+// designed bevel (designed_faces.h), one per line: what a user deselects before sharpening.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
 // vcglib's exporter relies on the mesh headers being included first.
 #include "edge_sharpener/util/mesh_types.h"
+#include "test_meshes/designed_faces.h"
 #include "test_meshes/non_manifold_spots.h"
 #include "test_meshes/shapes.h"
 // (keep after the mesh headers)
@@ -56,6 +61,10 @@ int main(int argc, char **argv) {
   app.add_flag("--spots", spots,
                "Also write each marching-cubes mesh with a non-manifold vertex near a chamfer "
                "and a non-manifold edge on one (<name>_spots.ply)");
+  bool bevelFaces = false;
+  app.add_flag("--bevel-faces", bevelFaces,
+               "For bevelled_block, also write the indices of the faces on its wide designed "
+               "bevel (<name>_bevel.txt)");
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -80,6 +89,19 @@ int main(int argc, char **argv) {
             (name + "_mc" + shapes::percentLabel(fraction) + ".ply");
         if (!savePly(mesh, mcPath)) return 1;
         report(mcPath, mesh, elapsed());
+        if (bevelFaces && name == "bevelled_block") {
+          std::filesystem::path listPath = mcPath;
+          listPath.replace_extension().concat("_bevel.txt");
+          std::ofstream list(listPath);
+          list << "# faces of " << mcPath.filename().string()
+               << " on the designed bevel 0.07 wide (test_meshes/designed_faces.h)\n";
+          const std::vector<char> on = shapes::bevelledBlockBevelFaces(
+              mesh, shapes::cellSizeForDiagonalFraction(shape, fraction), shapes::kWideBevel);
+          for (std::size_t f = 0; f < on.size(); ++f)
+            if (on[f]) list << f << "\n";
+          if (!list.flush()) throw std::runtime_error("cannot write " + listPath.string());
+          std::printf("%s\n", listPath.string().c_str());
+        }
         if (!spots) continue;
         using shapes::SpotKind, shapes::SpotPlace;
         // Both places chosen on the clean mesh (a spot's tetrahedron is bent too).

@@ -551,6 +551,10 @@ inline Shape rotated(const Shape& shape, const Point3d& axis, double angleRadian
   return result;
 }
 
+/// bevelled_block is bevelledBlock() turned by this angle (radians) about this axis.
+inline const Point3d kBevelledBlockAxis(3, 1, 2);
+constexpr double kBevelledBlockAngle = 0.5;
+
 /// All shapes, built once.
 inline const std::vector<Shape>& allShapes() {
   static const std::vector<Shape> shapes = [] {
@@ -560,7 +564,8 @@ inline const std::vector<Shape>& allShapes() {
     // The L-block tilted so that no face, edge or corner is aligned with the grid.
     list.push_back(rotated(list[1], Point3d(1, 2, 3), 0.6, "lblock_tilted"));
     // Designed bevels and fillets beside sharp edges, oblique to the grid.
-    list.push_back(rotated(detail::bevelledBlock(), Point3d(3, 1, 2), 0.5, "bevelled_block"));
+    list.push_back(rotated(detail::bevelledBlock(), kBevelledBlockAxis, kBevelledBlockAngle,
+                           "bevelled_block"));
     list.push_back(
         rotated(detail::finishedHexPrism(), Point3d(-1, 2, 2), 0.7, "finished_hexprism"));
     return list;

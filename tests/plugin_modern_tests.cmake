@@ -18,7 +18,8 @@ set(_es_modern_env
 edge_sharpener_script_tests(plugin_modern prepare 1800 ENVIRONMENT ${_es_modern_env}
   PROPERTIES RESOURCE_LOCK trixie_root FIXTURES_SETUP plugin_modern)
 edge_sharpener_script_tests(plugin_modern
-  releases 120  scripts 600  matches_cli 900  bad_input 300  non_manifold 300  gui 600  deb_trixie 300
+  releases 120  scripts 600  matches_cli 900  bad_input 300  non_manifold 300  selection 300
+  gui 600  deb_trixie 300
   deb_bookworm 300
   ENVIRONMENT ${_es_modern_env}
   PROPERTIES RESOURCE_LOCK trixie_root FIXTURES_REQUIRED plugin_modern)

@@ -20,6 +20,6 @@ endif()
 # and fail otherwise.
 edge_sharpener_meshlab_script_tests(plugin
   listing 120  sharpen_matches_cli 900  detect 600  colours 600  pipeline_hausdorff 900  bad_input 300
-  non_manifold 300
+  non_manifold 300  selection 300
   gui 600
   ENVIRONMENT "ES_TEST_TOOL=$<TARGET_FILE:plugin_test_tool>" "ES_CLI=${_es_cli}" "ES_MENU_TOOL=${_es_menu_tool}")

@@ -8,7 +8,7 @@
 if(TARGET edge-sharpener AND TARGET mesh-distance)
   edge_sharpener_test(reliability_tests
     reliability/test_bad_input.cpp reliability/test_invariants.cpp reliability/test_noise.cpp
-    reliability/test_non_manifold.cpp)
+    reliability/test_non_manifold.cpp reliability/test_selection.cpp)
   target_link_libraries(reliability_tests PRIVATE test_meshes)
   target_include_directories(reliability_tests PRIVATE
     "${CMAKE_CURRENT_SOURCE_DIR}" "${PROJECT_SOURCE_DIR}/apps")

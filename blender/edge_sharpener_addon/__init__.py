@@ -100,6 +100,16 @@ def mesh_arrays(mesh):
     return vertices.reshape(-1, 3), triangles.reshape(-1, 3)
 
 
+def selected_triangles(mesh):
+    """Per triangle of mesh_arrays(mesh), whether its polygon is selected (the
+    selection Edit Mode last wrote to the mesh)."""
+    polygon = np.empty(len(mesh.loop_triangles), dtype=np.int32)
+    mesh.loop_triangles.foreach_get("polygon_index", polygon)
+    selected = np.empty(len(mesh.polygons), dtype=bool)
+    mesh.polygons.foreach_get("select", selected)
+    return selected[polygon]
+
+
 def point_colors(mesh):
     """The mesh's colour attribute on points (the active one, else the first),
     as (name, data type, RGBA floats as stored: sRGB for bytes), or None. The
@@ -261,6 +271,12 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
         name="Mark Sharp", default=True,
         description="Mark the restored edges sharp, so that smooth shading keeps them crisp "
                     "(Blender 3.x: turns on Auto Smooth at 180 degrees on a smooth mesh without it)")
+    __annotations__["selected_only"] = bpy.props.BoolProperty(
+        name="Selected Only", default=True,
+        description="In Edit Mode, sharpen only within the selected faces, as Blender's own "
+                    "operators act: a feature outside them is left as it came, one they cut is "
+                    "sharpened up to them (deselect a designed bevel). Object Mode sharpens the "
+                    "whole mesh")
 
     def draw(self, context):
         layout = self.layout
@@ -269,6 +285,8 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
         for option in _ordinary_options():
             layout.prop(self, option["key"])
         layout.prop(self, "mark_sharp")
+        if context.mode == "EDIT_MESH":
+            layout.prop(self, "selected_only")
         layout.use_property_split = False
         layout.prop(self, "show_advanced", emboss=False,
                     icon="TRIA_DOWN" if self.show_advanced else "TRIA_RIGHT")
@@ -300,6 +318,8 @@ class MESH_OT_sharpen_chamfered_edges(bpy.types.Operator):
         try:
             vertices, faces = mesh_arrays(obj.data)
             options = _options(self)
+            if in_edit_mode and self.selected_only:
+                options["face_mask"] = selected_triangles(obj.data)
             kept = point_colors(obj.data)
             marks = edge_marks(obj.data)
             if kept is not None:

@@ -54,7 +54,7 @@ panel = {p.identifier for p in rna if p.identifier != "rna_type"}
 ordinary = {o["key"] for o in es.ordinary_options()}
 tuning = {o["key"] for o in es.tuning_options()}
 assert ordinary and tuning and not ordinary & tuning
-assert panel == ordinary | tuning | {"mark_sharp", "show_advanced"}, panel
+assert panel == ordinary | tuning | {"mark_sharp", "selected_only", "show_advanced"}, panel
 assert not rna["show_advanced"].default
 for option in es.OPTIONS:  # labels and tooltips are the table's
     assert rna[option["key"]].name == option["label"], option["key"]
@@ -135,6 +135,8 @@ def check_shape(name, exact, voxel_size):
         obj = bpy.data.objects[name]  # undo replaces the data blocks
         bpy.context.view_layer.objects.active = obj
         bpy.ops.object.mode_set(mode=mode)
+        if mode == "EDIT":  # Edit Mode acts on the selected faces: all of them here
+            bpy.ops.mesh.select_all(action="SELECT")
         assert sharpen(method="extended") == {"FINISHED"}
         bpy.ops.object.mode_set(mode="OBJECT")
         obj = bpy.data.objects[name]
@@ -327,5 +329,37 @@ if "crease" in bpy.types.MeshEdge.bl_rna.properties:
     mesh.edges.foreach_get("crease", crease)
     assert np.allclose(crease[kept], 0.5) and not crease[~kept].any(), "a crease was lost or added"
 print(f"edge marks: {kept.sum()} of {len(before)} input edges kept with their seams and creases")
+
+
+# Edit Mode acts on the selected faces (issue 61): the bevelled block with every face but
+# its wide designed bevel's selected. The bevel's vertices come out as they came, and the
+# mesh is what the package gives with that face_mask; Object Mode sharpens the whole mesh.
+generated = pathlib.Path(args.source) / "test_meshes" / "generated"
+block = read_ply(generated / "bevelled_block_mc2.ply")
+on_bevel = np.zeros(len(block["faces"]), dtype=bool)
+on_bevel[np.loadtxt(generated / "bevelled_block_mc2_bevel.txt", dtype=np.int64)] = True
+obj = new_object("bevelled", block["vertices"], block["faces"])
+bpy.context.tool_settings.mesh_select_mode = (False, False, True)
+obj.data.vertices.foreach_set("select", np.zeros(len(obj.data.vertices), dtype=bool))
+obj.data.edges.foreach_set("select", np.zeros(len(obj.data.edges), dtype=bool))
+obj.data.polygons.foreach_set("select", ~on_bevel)
+bpy.ops.ed.undo_push(message="bevelled")
+bpy.ops.object.mode_set(mode="EDIT")
+assert sharpen() == {"FINISHED"}
+bpy.ops.object.mode_set(mode="OBJECT")
+got_v, got_f = addon.mesh_arrays(bpy.data.objects["bevelled"].data)
+want_v, want_f, want = es.sharpen(block["vertices"], block["faces"], face_mask=~on_bevel)
+assert want["evidence"]["verdicts"]["outside_selection"] >= 1
+assert np.array_equal(got_v, want_v) and np.array_equal(got_f, want_f), "Edit Mode != face_mask"
+bevel_vertices = np.unique(block["faces"][on_bevel])
+assert (got_v[bevel_vertices] == block["vertices"][bevel_vertices]).all(), "the bevel moved"
+assert len(got_f) > len(block["faces"]), "nothing was sharpened"
+whole_v, whole_f, _ = es.sharpen(block["vertices"], block["faces"])
+obj = new_object("bevelled_whole", block["vertices"], block["faces"])
+assert sharpen() == {"FINISHED"}  # Object Mode: the whole mesh, whatever is selected
+got_v, got_f = addon.mesh_arrays(bpy.data.objects["bevelled_whole"].data)
+assert np.array_equal(got_v, whole_v) and np.array_equal(got_f, whole_f), "Object Mode != whole"
+print(f"Edit Mode selection: {len(bevel_vertices)} bevel vertices as they came, "
+      f"{len(block['faces'])} -> {len(want_f)} triangles; {want['input_notes']}")
 
 print("blender add-on test: all checks passed")

@@ -58,8 +58,10 @@ RichParameterList FilterEdgeSharpenerPlugin::initParameterList(const QAction *ac
   // constructor argument after the tooltip is RichParameter's isAdvanced
   // (RichBool etc. call it `hidden`); no category (a category's title would
   // stay in sight with its parameters hidden).
-  for (const auto *spec : esm::parametersOf(esm::filterSpec(ID(action)), /*withTuning=*/true))
+  const esm::FilterSpec &filter = esm::filterSpec(ID(action));
+  for (const auto *spec : esm::parametersOf(filter, /*withTuning=*/true))
     esm::addParameter(par, *spec, /*isAdvanced=*/!spec->ordinary());
+  esm::addSelectionParameter(par, filter, /*isAdvanced=*/false);
   return par;
 }
 

@@ -131,6 +131,21 @@ void buildMesh(const CheckedArrays<Real> &arrays, MeshType &m) {
     for (int k = 0; k < 3; ++k) m.face[i].V(k) = &m.vert[std::size_t(index[3 * i + k])];
 }
 
+/// Checks `face_mask` (None: none): a boolean array of shape (m,), m the
+/// face count. \return per face, selected or not (empty for None).
+std::vector<char> checkFaceMask(const py::object &mask, py::ssize_t faceCount) {
+  if (mask.is_none()) return {};
+  const py::array a = asArray(mask, "face_mask");
+  if (a.ndim() != 1 || a.shape(0) != faceCount)
+    throw es::InputError("face_mask must be an array of shape (" + std::to_string(faceCount) +
+                         ",), one bool per face, got shape " + shapeText(a));
+  if (a.dtype().kind() != 'b')
+    throw es::InputError("face_mask must hold booleans, got " + dtypeText(a) +
+                         " (numpy.asarray(mask, dtype=bool) makes one)");
+  const py::array_t<bool, py::array::c_style | py::array::forcecast> values(a);
+  return std::vector<char>(values.data(), values.data() + faceCount);
+}
+
 /// Checks `vertex_colors` (None: none): an (n, 3) or (n, 4) array, n the
 /// vertex count, of integers in [0, 255] or floats in [0, 1]. \return RGBA
 /// bytes, 4 per vertex (alpha 255 where absent; empty for None).
@@ -502,11 +517,18 @@ py::object toPython(const nlohmann::json &j) {
 
 template <class MeshType, class Real>
 py::tuple sharpenAs(const py::array &vertices, const py::array &faces, const py::object &progress,
-                    const py::object &vertexColors, es::SharpenOptions opt) {
+                    const py::object &vertexColors, const py::object &faceMask,
+                    es::SharpenOptions opt) {
   const CheckedArrays<Real> arrays = checkArrays<Real>(vertices, faces);
   const std::vector<std::uint8_t> rgba = checkVertexColors(vertexColors, vertices.shape(0));
+  const std::vector<char> selected = checkFaceMask(faceMask, faces.shape(0));
   MeshType m;
   buildMesh(arrays, m);
+  if (!selected.empty()) {
+    for (std::size_t i = 0; i < selected.size(); ++i)
+      if (selected[i]) m.face[i].SetS();
+    opt.selectedFacesOnly = true;
+  }
   for (std::size_t i = 0; 4 * i < rgba.size(); ++i)
     m.vert[i].C() = vcg::Color4b(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2], rgba[4 * i + 3]);
   RestoredVertices<MeshType> restored(m);
@@ -540,13 +562,13 @@ py::tuple sharpenAs(const py::array &vertices, const py::array &faces, const py:
 
 py::tuple sharpen(const py::object &vertexData, const py::object &faceData,
                   const py::object &progress, const py::object &vertexColors,
-                  const py::object &tuning, const py::kwargs &options) {
+                  const py::object &faceMask, const py::object &tuning, const py::kwargs &options) {
   const es::SharpenOptions opt = optionsFrom(options, tuning, "sharpen");
   const py::array vertices = asArray(vertexData, "vertices"), faces = asArray(faceData, "faces");
   requireRows3(vertices, "vertices");
   return isFloat32(vertices)
-             ? sharpenAs<es::Mesh, float>(vertices, faces, progress, vertexColors, opt)
-             : sharpenAs<es::MeshD, double>(vertices, faces, progress, vertexColors, opt);
+             ? sharpenAs<es::Mesh, float>(vertices, faces, progress, vertexColors, faceMask, opt)
+             : sharpenAs<es::MeshD, double>(vertices, faces, progress, vertexColors, faceMask, opt);
 }
 
 template <class MeshType, class Real>
@@ -702,8 +724,8 @@ PYBIND11_MODULE(_edge_sharpener, m) {
           "or a value of the wrong kind.",
           "");
   static const std::string sharpenDoc =
-      "sharpen(vertices, faces, *, progress=None, vertex_colors=None, tuning=None, **options) "
-      "-> (vertices, faces, report)\n\n" +
+      "sharpen(vertices, faces, *, progress=None, vertex_colors=None, face_mask=None, "
+      "tuning=None, **options) -> (vertices, faces, report)\n\n" +
       wrapped(
           "Detects chamfers and corners and sharpens them. Original vertices keep their "
           "index (with the paper method also their position: the others move the feature "
@@ -722,6 +744,14 @@ PYBIND11_MODULE(_edge_sharpener, m) {
           "on a sharp edge or corner, and 'sharp_edges' ((k, 2) int64) the output edges "
           "joining two of them: the restored feature lines (to mark sharp for shading, or "
           "select).",
+          "") +
+      wrapped(
+          "face_mask, an (m,) bool array, sharpens only within the faces it selects (as "
+          "MeshLab's 'Affect only selected faces'): every feature is judged as without it, "
+          "then a new vertex on a face outside it stays at rest, so a feature it cuts is "
+          "sharpened up to its border and a feature wholly outside is left (report verdict "
+          "'outside_selection'); the paper and extended methods split and move nothing outside "
+          "it. No face selected: the mesh comes back as it was (report 'summary' says so).",
           "") +
       "\n" + arraysDoc + options;
   static const std::string detectDoc =
@@ -749,7 +779,7 @@ PYBIND11_MODULE(_edge_sharpener, m) {
 
   m.def("sharpen", &sharpen, sharpenDoc.c_str(), py::arg("vertices"), py::arg("faces"),
         py::kw_only(), py::arg("progress") = py::none(), py::arg("vertex_colors") = py::none(),
-        py::arg("tuning") = py::none());
+        py::arg("face_mask") = py::none(), py::arg("tuning") = py::none());
   m.def("detect", &detect, detectDoc.c_str(), py::arg("vertices"), py::arg("faces"), py::kw_only(),
         py::arg("progress") = py::none(), py::arg("tuning") = py::none());
   m.def("mesh_distance", &meshDistance, distanceDoc.c_str(), py::arg("a_vertices"),

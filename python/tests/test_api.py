@@ -297,6 +297,61 @@ def test_detect_leaves_non_manifold_spots_unlabelled(mesh):
     assert all(es.FACE_LABELS[labels[i]] not in ("chamfer", "corner") for i in at_spots)
 
 
+def bevelled_block():
+    """bevelled_block_mc2 and, per face, whether it lies on the block's wide designed bevel
+    (the list generate-test-meshes --bevel-faces writes)."""
+    mesh = sample("bevelled_block_mc2")
+    on_bevel = np.zeros(len(mesh["faces"]), dtype=bool)
+    on_bevel[np.loadtxt(SAMPLES / "bevelled_block_mc2_bevel.txt", dtype=np.int64)] = True
+    return mesh["vertices"], mesh["faces"], on_bevel
+
+
+def test_face_mask_leaves_a_designed_bevel_as_it_came():
+    """face_mask=~bevel: the bevel's vertices come out bit for bit, the other features are
+    sharpened, the output is nearer the exact block than the input (without the mask the
+    default bends the bevel: farther)."""
+    vertices, faces, on_bevel = bevelled_block()
+    copies = frozen_copies(vertices, faces, on_bevel)
+    mask = ~on_bevel
+    out_v, out_f, report = es.sharpen(vertices, faces, face_mask=mask)
+    assert_unchanged([vertices, faces, on_bevel], copies)
+    bevel_vertices = np.unique(faces[on_bevel])
+    assert len(bevel_vertices) > 50
+    assert (out_v[bevel_vertices] == vertices[bevel_vertices]).all()
+    assert report["selection"] == {"selected_faces_only": True, "selected_faces": int(mask.sum())}
+    verdicts = report["evidence"]["verdicts"]
+    assert verdicts["outside_selection"] >= 1 and verdicts["restored"] >= 10
+    assert report["input_notes"].startswith(f"selection: {mask.sum()} of {len(faces)} faces")
+    exact = sample("bevelled_block_reference")
+    def max_distance(v, f):
+        return es.mesh_distance(v, f, exact["vertices"], exact["faces"], seed=1)["symmetric"]["max"]
+    whole_v, whole_f, _ = es.sharpen(vertices, faces)
+    assert max_distance(out_v, out_f) < max_distance(vertices, faces) < max_distance(whole_v, whole_f)
+
+
+def test_face_mask_selecting_nothing_returns_the_mesh():
+    vertices, faces, _ = bevelled_block()
+    out_v, out_f, report = es.sharpen(vertices, faces, face_mask=np.zeros(len(faces), dtype=bool))
+    assert np.array_equal(out_v, vertices) and np.array_equal(out_f, faces)
+    assert report["summary"] == "nothing selected: the mesh is left as it came"
+
+
+@pytest.mark.parametrize("mask, message", [
+    (np.ones(5, dtype=bool), "face_mask must be an array of shape (6460,), one bool per face, "
+                             "got shape (5,)"),
+    (np.ones((6460, 1), dtype=bool), "got shape (6460, 1)"),
+    (np.ones(6460, dtype=np.int64), "face_mask must hold booleans, got int64"),
+    ("all", "face_mask must be an array of shape (6460,)"),
+])
+def test_bad_face_mask_is_refused(mask, message):
+    vertices, faces, _ = bevelled_block()
+    copies = frozen_copies(vertices, faces)
+    with pytest.raises(es.InputError) as error:
+        es.sharpen(vertices, faces, face_mask=mask)
+    assert message in str(error.value)
+    assert_unchanged([vertices, faces], copies)
+
+
 @pytest.mark.parametrize("function", [es.sharpen, es.detect])
 @pytest.mark.parametrize("case", BAD_INPUTS, ids=str)
 def test_bad_input_is_refused_with_the_core_message(case, function):

@@ -11,7 +11,7 @@ done
 [[ -n ${ES_MENU_TOOL:-} && -x ${ES_MENU_TOOL:-} ]] || fail "list_filter_menu not built"
 
 FILTER="Edge-Sharpener: Sharpen Chamfered Edges"
-PARAMS=(method smoothMultiplier edgeLengthCheck colorize degenerateAngleDeg)  # dialog order
+PARAMS=(method smoothMultiplier edgeLengthCheck colorize degenerateAngleDeg Selected)  # dialog order
 
 # Position of the filter in its submenu (0x80 = Smoothing class), as the GUI sorts it.
 rc=0

@@ -28,7 +28,8 @@ check_filter "Edge-Sharpener: Sharpen Chamfered Edges" "Enum|Method
 Float|Smooth-edge multiplier
 Bool|Edge-length check
 Bool|Colorize
-Float|Degenerate angle (deg)"
+Float|Degenerate angle (deg)
+Bool|Affect only selected faces"
 check_filter "Edge-Sharpener: Detect Chamfers" "Enum|Method
 Float|Smooth-edge multiplier"
 

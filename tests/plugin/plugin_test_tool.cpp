@@ -16,6 +16,11 @@
 //   plugin_test_tool spot-faces IN.ply OUT.ply
 //       IN has faces at non-manifold spots, and each comes out in OUT as it was (the same
 //       vertex indices, bit-identical positions); OUT has no other face at a spot.
+//   plugin_test_tool mark-faces IN.ply FACES.txt OUT.ply
+//       IN with face quality 1 on the faces FACES.txt lists (0-based indices, one per line,
+//       # comments), 0 elsewhere: MeshLab's Conditional Face Selection reads it as fq.
+//   plugin_test_tool kept-vertices IN.ply OUT.ply FACES.txt
+//       every vertex of the listed faces of IN has its position in OUT, bit for bit.
 #include <edge_sharpener/util/mesh_types.h>
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/color.h>
@@ -28,6 +33,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <set>
@@ -156,6 +162,61 @@ int spotFaces(const std::string &inPath, const std::string &outPath) {
     return 1;
   }
   std::cout << "OK: " << spots.size() << " faces at non-manifold spots as they came\n";
+  return 0;
+}
+
+/// The face indices a list file holds (mark-faces, kept-vertices); false when
+/// it cannot be read or names no face of `m`.
+bool readFaceList(const std::string &path, const Mesh &m, std::vector<std::size_t> &faces) {
+  std::ifstream in(path);
+  if (!in) {
+    std::cerr << "cannot read " << path << "\n";
+    return false;
+  }
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::size_t f = std::stoul(line);
+    if (f >= m.face.size()) {
+      std::cerr << path << ": face " << f << " out of range\n";
+      return false;
+    }
+    faces.push_back(f);
+  }
+  return true;
+}
+
+int markFaces(const std::string &inPath, const std::string &listPath, const std::string &out) {
+  Loaded in;
+  std::vector<std::size_t> listed;
+  if (!load(inPath, in) || !readFaceList(listPath, in.m, listed)) return 2;
+  for (auto &f : in.m.face) f.Q() = 0;
+  for (const std::size_t f : listed) in.m.face[f].Q() = 1;
+  if (vcg::tri::io::ExporterPLY<Mesh>::Save(in.m, out.c_str(), vcg::tri::io::Mask::IOM_FACEQUALITY,
+                                            true) != 0) {
+    std::cerr << "cannot write " << out << "\n";
+    return 2;
+  }
+  return 0;
+}
+
+int keptVertices(const std::string &inPath, const std::string &outPath,
+                 const std::string &listPath) {
+  Loaded in, out;
+  std::vector<std::size_t> listed;
+  if (!load(inPath, in) || !load(outPath, out) || !readFaceList(listPath, in.m, listed)) return 2;
+  std::set<std::size_t> vertices;
+  for (const std::size_t f : listed)
+    for (int i = 0; i < 3; ++i) vertices.insert(vcg::tri::Index(in.m, in.m.face[f].cV(i)));
+  std::size_t moved = 0;
+  for (const std::size_t v : vertices)
+    moved += v >= out.m.vert.size() || !(out.m.vert[v].cP() == in.m.vert[v].cP());
+  if (listed.empty() || moved > 0) {
+    std::cout << "FAIL: " << moved << " of the " << vertices.size() << " vertices of the "
+              << listed.size() << " listed faces moved\n";
+    return 1;
+  }
+  std::cout << "OK: the " << vertices.size() << " vertices of the " << listed.size()
+            << " listed faces as they came\n";
   return 0;
 }
 
@@ -312,6 +373,8 @@ int usage() {
   std::cerr << "usage: plugin_test_tool make-lblock|make-pointcloud|make-nonmanifold|"
                "make-misoriented OUT\n"
                "       plugin_test_tool spot-faces IN OUT\n"
+               "       plugin_test_tool mark-faces IN FACES.txt OUT\n"
+               "       plugin_test_tool kept-vertices IN OUT FACES.txt\n"
                "       plugin_test_tool paint-gradient IN OUT\n"
                "       plugin_test_tool info IN\n"
                "       plugin_test_tool compare A B [--rel-tol T] [--colors] [--vertex-colors] "
@@ -328,6 +391,9 @@ int main(int argc, char **argv) {
   if (args.size() == 2 && args[0] == "make-nonmanifold") return makeNonManifold(args[1]);
   if (args.size() == 2 && args[0] == "make-misoriented") return makeMisoriented(args[1]);
   if (args.size() == 3 && args[0] == "spot-faces") return spotFaces(args[1], args[2]);
+  if (args.size() == 4 && args[0] == "mark-faces") return markFaces(args[1], args[2], args[3]);
+  if (args.size() == 4 && args[0] == "kept-vertices")
+    return keptVertices(args[1], args[2], args[3]);
   if (args.size() == 2 && args[0] == "info") return info(args[1]);
   if (args.size() == 3 && args[0] == "paint-gradient") return paintGradient(args[1], args[2]);
   if (args.size() >= 3 && args[0] == "compare") {

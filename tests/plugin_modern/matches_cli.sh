@@ -71,7 +71,7 @@ in_trixie "$RUNNER" --add-plugin "$PLUGIN" -i "$in" --params "$FILTER" >params.t
 in_trixie "$RUNNER" --add-plugin "$PLUGIN" -i "$in" --params "Edge-Sharpener: Detect Chamfers" \
   >detect_params.txt 2>>params.err || { cat params.err >&2; fail "runner --params (Detect) failed"; }
 shown=$(awk -F'\t' '$3 == "shown" {print $1}' params.txt | tr '\n' ' ')
-[[ $shown == "method smoothMultiplier edgeLengthCheck colorize degenerateAngleDeg " ]] ||
+[[ $shown == "method smoothMultiplier edgeLengthCheck colorize degenerateAngleDeg Selected " ]] ||
   fail "Sharpen's shown parameters: '$shown'"
 ! grep -q $'\tadvanced\t' detect_params.txt || fail "Detect has advanced parameters"
 "$ES_CLI" --help-all >help_all.txt

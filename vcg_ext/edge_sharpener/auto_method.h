@@ -93,12 +93,21 @@ class AutoMethod {
             measureSurface(m, zones.inputFaces, zones.faceRegion, zones.support.sampleSpacing)) {}
 
   /// After placement: judges every feature (a verdict each) and sends back
-  /// to rest the moves of those left and of the vertices weak on their own.
+  /// to rest the moves of those left and of the vertices weak on their own,
+  /// and every vertex of a face outside the user's selection.
   void judgeFeatures(VertexMoves<MeshType> &moves, double longestInputEdge) {
     guard_.emplace(m_, moves, zones_.support,
                    InputSurface{zones_.inputFaces, input_.faceVertices()}, surface_,
                    longestInputEdge, opt_, held_);
     stats_ = guard_->revertWeakFeatures();
+    for (std::size_t f = 0; f < held_.unselected.size(); ++f) {
+      if (!held_.unselected[f]) continue;
+      for (const std::uint32_t v : input_.faceVertices()[f])
+        if (moves.hasRest(v) && moves.isMoved(v)) {
+          moves.sendBack(v, Placement::Original);
+          ++stats_.zoneReverted;
+        }
+    }
   }
 
   /// The degenerate cleanup (where vertices moved), the planar folds and the

@@ -7,7 +7,11 @@
 
 #include <vcg/space/color4.h>
 
+#include <vector>
+
+#include "extended/zones.h"
 #include "util/mesh_labels.h"
+#include "util/non_manifold.h"
 
 namespace edge_sharpener {
 
@@ -71,6 +75,23 @@ std::size_t selectChamferFaces(MeshType &m, MeshLabels<MeshType> &labels) {
     } else {
       f.ClearS();
     }
+  }
+  return n;
+}
+
+/// The zone methods' selection: every face of a feature zone (`faceRegion`
+/// kZone), the faces whose vertices Sharpen may move or split (a smooth
+/// region's vertices never move), but the faces held as they came; every
+/// other face deselected. What Sharpen with "Affect only selected faces"
+/// takes as it is. \return the number selected.
+template <class MeshType>
+std::size_t selectZoneFaces(MeshType &m, const std::vector<int> &faceRegion,
+                            const HeldFaces &held) {
+  std::size_t n = 0;
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    const bool zone = f < faceRegion.size() && faceRegion[f] == kZone && !held.holds(f);
+    zone ? m.face[f].SetS() : m.face[f].ClearS();
+    n += zone;
   }
   return n;
 }

@@ -46,7 +46,9 @@ std::string findInputProblem(MeshType &m);
 /// \throws InputError (mesh untouched) when findInputProblem() reports a problem.
 /// Faces at non-manifold vertices and edges, and the features that reach
 /// them, are left as they came; the output keeps those vertices and edges
-/// (report.nonManifold says how many and where).
+/// (report.nonManifold says how many and where). With opt.selectedFacesOnly
+/// only the features within the selected faces are sharpened (options.h);
+/// no face selected: the mesh is left as it came.
 template <class MeshType>
 SharpenReport sharpen(MeshType &m, const SharpenOptions &opt = {});
 

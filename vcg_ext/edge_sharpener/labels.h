@@ -85,8 +85,9 @@ enum class Verdict : std::uint8_t {
   CornerOfWeakEdge,   ///< a corner one of whose edges was left
   AlreadySharp,       ///< its moves slide along the input: sharp there already
   AtNonManifoldSpot,  ///< it reaches a face held at a non-manifold spot
+  OutsideSelection,   ///< it splits a face outside the user's selection
 };
-constexpr int kVerdictCount = 11;
+constexpr int kVerdictCount = 12;
 
 /// Whether a feature of this verdict is left as it came.
 inline bool isLeft(Verdict v) {
@@ -107,6 +108,7 @@ inline const char *toString(Verdict v) {
     case Verdict::CornerOfWeakEdge: return "corner_of_weak_edge";
     case Verdict::AlreadySharp: return "already_sharp";
     case Verdict::AtNonManifoldSpot: return "at_non_manifold_spot";
+    case Verdict::OutsideSelection: return "outside_selection";
   }
   return "unknown";
 }
@@ -125,6 +127,7 @@ inline const char *describe(Verdict v) {
     case Verdict::CornerOfWeakEdge: return "at a corner of a weak edge";
     case Verdict::AlreadySharp: return "already sharp";
     case Verdict::AtNonManifoldSpot: return "at a non-manifold spot";
+    case Verdict::OutsideSelection: return "outside the selection";
   }
   return "unknown";
 }

@@ -41,6 +41,20 @@ struct SharpenOptions {
   /// sharpening (paper: 1 degree).
   double degenerateAngleRad = 1.0 * M_PI / 180.0;
 
+  /// Sharpen only within the faces selected on the mesh (vcglib's face
+  /// selection flag, as MeshLab's "Affect only selected faces"). The auto
+  /// method judges every feature on the whole mesh, as without a selection;
+  /// then a new vertex on a face outside the selection stays at rest (with
+  /// the vertices it was made between), and so does every vertex of such a
+  /// face (a smooth region's never moves anyway), so a feature it cuts is
+  /// sharpened up to its border, a feature wholly outside is left (verdict
+  /// outside_selection) and so are the corners it runs into. The paper and
+  /// extended methods split only selected faces and move no vertex of an
+  /// unselected one. Not in the option table: the
+  /// faces come with the mesh, each front end has its own way to give them
+  /// (MeshLab's selection, Python's face_mask, the CLI's --only-faces).
+  bool selectedFacesOnly = false;
+
   /// Tuning, by method (rulebook.h).
   PaperSettings paper;
   ExtendedSettings extended;  ///< the extended and auto methods

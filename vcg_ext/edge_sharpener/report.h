@@ -163,6 +163,11 @@ struct SharpenReport {
   /// Connected parts, when some were sampled at spacings so different that
   /// each was sharpened at its own (util/part_scales.h; else both 0).
   std::size_t parts = 0, partsRescaled = 0;
+  /// SharpenOptions::selectedFacesOnly: the faces selected (else both 0).
+  bool selectedFacesOnly = false;
+  std::size_t selectedFaces = 0;
+  /// detectChamfers(): the faces it selected (those Sharpen may change).
+  std::size_t detectedFaces = 0;
 };
 
 namespace detail {
@@ -282,12 +287,16 @@ inline std::string formatReport(const SharpenReport &r) {
 ///   auto:      "features: 14 restored, 3 left as they were: 2 too short, 1 shallow angle"
 ///              (each verdict that occurred, in describe()'s words)
 ///   paper, extended: "new vertices: 120 placed on sharp edges, 8 left at rest"
-///   detection only:  "detected: 686 chamfer faces, 12 corner faces, 6722 smooth-region faces"
+///   detection only:  "detected: 686 chamfer faces, 12 corner faces, 6722 smooth-region faces;
+///                     740 faces selected, those Sharpen may change"
 inline std::string formatVerdictSummary(const SharpenReport &r) {
   std::ostringstream s;
+  if (r.selectedFacesOnly && r.selectedFaces == 0)
+    return "nothing selected: the mesh is left as it came";
   if (!r.geometryChanged) {
     s << "detected: " << r.filters.chamferFaces << " chamfer faces, " << r.filters.cornerFaces
-      << " corner faces, " << r.filters.redFaces << " smooth-region faces (geometry unchanged)";
+      << " corner faces, " << r.filters.redFaces << " smooth-region faces; " << r.detectedFaces
+      << " faces selected, those Sharpen may change (geometry unchanged)";
     return s.str();
   }
   if (r.evidenceGuard) {
@@ -325,7 +334,7 @@ inline std::string formatVerdictSummary(const SharpenReport &r) {
 
 /// What the input had that the run left as it came or handled apart, in one
 /// line for people ("" when nothing): its non-manifold spots, its parts at
-/// other spacings, its open borders.
+/// other spacings, its open borders, the user's selection.
 inline std::string formatInputNotes(const SharpenReport &r) {
   std::ostringstream s;
   const NonManifoldStats &n = r.nonManifold;
@@ -339,6 +348,17 @@ inline std::string formatInputNotes(const SharpenReport &r) {
   if (r.inputBorderEdges > 0)
     s << (n.vertices > 0 || r.partsRescaled > 0 ? "; " : "") << "open: " << r.inputBorderEdges
       << " border edges, their vertices kept where they are";
+  if (r.selectedFacesOnly) {
+    s << (s.tellp() > 0 ? "; " : "") << "selection: " << r.selectedFaces << " of " << r.inputFaces
+      << " faces";
+    if (r.selectedFaces == 0)
+      ;  // formatVerdictSummary says it
+    else if (r.evidenceGuard)
+      s << ", " << r.evidence.count(Verdict::OutsideSelection)
+        << " features outside it left as they came, those it cuts sharpened up to its border";
+    else
+      s << ", the faces outside it neither split nor moved";
+  }
   return s.str();
 }
 

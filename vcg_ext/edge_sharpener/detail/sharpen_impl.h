@@ -177,16 +177,60 @@ SharpenReport validate(MeshType &m, const SharpenOptions &opt, bool *nonManifold
   return report;
 }
 
+/// SharpenOptions::selectedFacesOnly: per face, whether it lies outside the
+/// selection (vcglib's face selection flag), and the count selected into
+/// `report` (empty without the option).
+template <class MeshType>
+std::vector<char> unselectedFaces(const MeshType &m, const SharpenOptions &opt,
+                                  SharpenReport &report) {
+  if (!opt.selectedFacesOnly) return {};
+  report.selectedFacesOnly = true;
+  std::vector<char> unselected(m.face.size(), 0);
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    unselected[f] = !m.face[f].IsS();
+    report.selectedFaces += !unselected[f];
+  }
+  return unselected;
+}
+
+/// The faces the pipeline holds and those outside the selection. The auto
+/// method judges the selection per feature (featureVerdicts); the paper and
+/// extended methods, which judge none, hold every face outside it.
+template <class MeshType>
+HeldFaces heldWithSelection(const MeshType &m, HeldFaces held, std::vector<char> unselected,
+                            Method method) {
+  if (unselected.empty()) return held;
+  if (method != Method::Auto) {
+    held.face.resize(m.face.size(), 0);
+    held.vertex.resize(m.vert.size(), 0);
+    for (std::size_t f = 0; f < m.face.size(); ++f) {
+      if (!unselected[f]) continue;
+      held.face[f] = 1;
+      for (int i = 0; i < 3; ++i) held.vertex[vcg::tri::Index(m, m.face[f].cV(i))] = 1;
+    }
+  }
+  held.unselected = std::move(unselected);
+  return held;
+}
+
 /// Runs `pipeline(held, report)` on `m`: the mesh as people have it made one
 /// the pipelines take, and put back after. A mesh with non-manifold spots is
 /// cut loose there first (NonManifoldCut): the pipeline sees a 2-manifold
 /// mesh whose faces at the spots are held; afterwards they are welded back,
 /// so the output has the input's non-manifold vertices and edges. Parts
-/// sampled at different spacings are each brought to one (PartScales).
+/// sampled at different spacings are each brought to one (PartScales). With
+/// SharpenOptions::selectedFacesOnly, the faces outside the selection go to
+/// the pipeline too (heldWithSelection); none selected: nothing runs.
 template <class MeshType, class Pipeline>
 SharpenReport asPeopleHaveIt(MeshType &m, const SharpenOptions &opt, Pipeline &&pipeline) {
   bool nonManifold = false;
   SharpenReport report = validate(m, opt, &nonManifold);
+  std::vector<char> unselected = unselectedFaces(m, opt, report);
+  if (report.selectedFacesOnly && report.selectedFaces == 0) {
+    report.outputVertices = m.vert.size();
+    report.outputFaces = m.face.size();
+    return report;
+  }
   std::optional<NonManifoldCut<MeshType>> cut;
   if (nonManifold) {
     cut.emplace(m);
@@ -198,11 +242,14 @@ SharpenReport asPeopleHaveIt(MeshType &m, const SharpenOptions &opt, Pipeline &&
     }
   }
   PartScales<MeshType> parts(m);
-  if (!cut && parts.rescaled() == 0) return pipeline(HeldFaces{}, report);
+  if (!cut && parts.rescaled() == 0)
+    return pipeline(heldWithSelection(m, HeldFaces{}, std::move(unselected), opt.method), report);
   const std::size_t borderEdges = report.inputBorderEdges;
   const double longestEdge = report.longestInputEdge;
   if (parts.rescaled() > 0) report.longestInputEdge = longestEdgeLength(m);  // as the run sees it
-  report = pipeline(cut ? cut->held() : HeldFaces{}, report);
+  report = pipeline(
+      heldWithSelection(m, cut ? cut->held() : HeldFaces{}, std::move(unselected), opt.method),
+      report);
   report.longestInputEdge = longestEdge;
   parts.restore();
   if (cut) {
@@ -308,16 +355,20 @@ SharpenReport sharpenAuto(MeshType &m, const SharpenOptions &opt, const HeldFace
 }  // namespace detail
 
 template <class MeshType>
-SharpenReport detectChamfers(MeshType &m, const SharpenOptions &opt) {
+SharpenReport detectChamfers(MeshType &m, const SharpenOptions &options) {
+  SharpenOptions opt = options;
+  opt.selectedFacesOnly = false;  // detection looks at the whole mesh, and selects
   return detail::asPeopleHaveIt(m, opt, [&](const HeldFaces &held, SharpenReport report) {
     MeshLabels<MeshType> labels(m);
+    std::vector<int> faceRegion;  // the zone methods': kZone on the faces they may change
     if (opt.method == Method::Paper)
       detail::detectByFilters(m, labels, opt, report);
     else
-      detail::detectByZones(m, labels, opt, report);
+      faceRegion = detail::detectByZones(m, labels, opt, report).faceRegion;
     holdFaces(m, labels, held, report.filters);
     colorize(m, labels);
-    selectChamferFaces(m, labels);
+    report.detectedFaces =
+        faceRegion.empty() ? selectChamferFaces(m, labels) : selectZoneFaces(m, faceRegion, held);
     report.outputVertices = m.vert.size();
     report.outputFaces = m.face.size();
     detail::reportProgress(opt, 100, "Edge-Sharpener: done");

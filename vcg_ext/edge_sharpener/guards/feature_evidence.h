@@ -525,6 +525,19 @@ inline bool meshEvidenceIsWeak(double refused, double lift, const SurfaceMeasure
   return refused > refusedBound(surface, opt) || (mostlyAlreadySharp(lift, opt) && !exactSampling);
 }
 
+/// Per inserted vertex (split plan order): whether it lies on a face outside
+/// the user's selection (HeldFaces::unselected), where it stays at rest.
+inline std::vector<char> verticesOutsideSelection(const SplitPlan &plan, const HeldFaces &held) {
+  std::vector<char> outside(plan.inserted.size(), 0);
+  for (const SplitFace &face : plan.faces) {
+    if (!held.outsideSelection(face.face)) continue;
+    for (const int k : face.edgeVertex)
+      if (k >= 0) outside[k] = 1;
+    if (face.centerVertex >= 0) outside[face.centerVertex] = 1;
+  }
+  return outside;
+}
+
 /// Per feature, its verdict: every feature's Verdict::MeshEvidenceWeak when
 /// the mesh as a whole shows too little evidence (meshEvidenceIsWeak with the
 /// moves' median `lift`), else its own (judgeFeature, on a mesh sampled
@@ -532,6 +545,8 @@ inline bool meshEvidenceIsWeak(double refused, double lift, const SurfaceMeasure
 /// corner is where its edges meet); a feature one of whose new vertices lies
 /// on an edge from a vertex `held` pins (a vertex of a face held at a
 /// non-manifold spot), AtNonManifoldSpot (restoring it would bend that face);
+/// a feature all of whose new vertices lie on faces outside the user's
+/// selection (verticesOutsideSelection), OutsideSelection;
 /// and, on a mesh sampled exactly and mostly
 /// sharp already, a feature whose own moves slide along it, AlreadySharp
 /// (Feature::medianLift; its moves that lift are judged one by one,
@@ -551,6 +566,14 @@ inline std::vector<Verdict> featureVerdicts(const SplitPlan &plan,
     for (int i = 0; i < plan.inserted[k].originalCount; ++i)
       if (held.pins(plan.inserted[k].original[i]))
         verdict[featureOf[k]] = Verdict::AtNonManifoldSpot;
+  if (!held.unselected.empty()) {
+    const std::vector<char> outside = verticesOutsideSelection(plan, held);
+    std::vector<char> inside(features.size(), 0);
+    for (std::size_t k = 0; k < plan.inserted.size(); ++k)
+      if (!outside[k]) inside[featureOf[k]] = 1;
+    for (std::size_t c = 0; c < features.size(); ++c)
+      if (!inside[c]) verdict[c] = Verdict::OutsideSelection;
+  }
   // An edge feature's weakness reaches the corner features around its sources;
   // an edge already sharp is no evidence against the corner it runs into.
   std::vector<char> weakSource(plan.originalVertexCount, 0);
@@ -721,11 +744,13 @@ class EvidenceGuard {
     slidingVertex_.assign(count, 0);
     retreatFirst_.assign(m_.vert.size(), 0);
     const auto sharpAlready = [&](std::size_t k) { return judged.alreadySharp(featureOf_[k]); };
+    const std::vector<char> outside = verticesOutsideSelection(plan, held_);
     for (std::size_t k = 0; k < count; ++k) {
       if (m_.vert[first + k].IsD()) continue;
       // Not moved (lift -1): placement left it, nothing to cut back there.
       lifting[k] = judged.lifts[k] >= 0 && !mostlyAlreadySharp(judged.lifts[k], opt_);
-      kept[k] = (sharpAlready(k) ? lifting[k] : !judged.left(featureOf_[k])) && !vertexIsWeak(k);
+      kept[k] = (sharpAlready(k) ? lifting[k] : !judged.left(featureOf_[k])) && !vertexIsWeak(k) &&
+                !outside[k];
     }
     for (const SplitFace &face : plan.faces) {
       const int corner = face.centerVertex;
@@ -736,8 +761,10 @@ class EvidenceGuard {
         if (e >= 0 && sharpAlready(e) && lifting[e] && kept[e]) kept[corner] = 1;
     }
     for (std::size_t k = 0; k < count; ++k) {
-      if (m_.vert[first + k].IsD() || !sharpAlready(k)) continue;
-      slidingVertex_[k] = !kept[k] && !lifting[k];
+      if (m_.vert[first + k].IsD()) continue;
+      slidingVertex_[k] = outside[k];  // at rest by the user's choice: not refused
+      if (!sharpAlready(k)) continue;
+      slidingVertex_[k] = slidingVertex_[k] || (!kept[k] && !lifting[k]);
       retreatFirst_[first + k] = kept[k];
     }
     return kept;
@@ -789,9 +816,10 @@ class EvidenceGuard {
   std::vector<Feature> features_;
   std::vector<std::uint32_t> featureOf_;
   bool exactSampling_ = false;  ///< sampledExactly, set by judge()
-  /// Per inserted vertex: in a feature already sharp, its own move slides
-  /// (set by keptMoves). Such a vertex is neither moved nor refused:
-  /// the input is sharp there; the count after the guards leaves it out.
+  /// Per inserted vertex: in a feature already sharp, its own move slides,
+  /// or it lies outside the user's selection (set by keptMoves). Such a
+  /// vertex is neither moved nor refused (the input is sharp there, or the
+  /// user chose): the count after the guards leaves it out.
   std::vector<char> slidingVertex_;
   std::vector<char> retreatFirst_;  ///< keptMoves: by vertex index
 };

@@ -20,13 +20,17 @@
 namespace edge_sharpener {
 
 /// The faces a run leaves exactly as they came, and their vertices, by index
-/// at the start of the run. Empty: nothing held.
+/// at the start of the run (empty: nothing held); and the faces outside the
+/// user's selection (SharpenOptions::selectedFacesOnly; empty: no selection),
+/// which the auto method reads per feature, and the other methods hold.
 struct HeldFaces {
-  std::vector<char> face;    ///< per face
-  std::vector<char> vertex;  ///< per vertex: a vertex of a held face
+  std::vector<char> face;        ///< per face
+  std::vector<char> vertex;      ///< per vertex: a vertex of a held face
+  std::vector<char> unselected;  ///< per face: outside the selection
   bool holds(std::size_t f) const { return f < face.size() && face[f]; }
   bool pins(std::size_t v) const { return v < vertex.size() && vertex[v]; }
   bool empty() const { return face.empty(); }
+  bool outsideSelection(std::size_t f) const { return f < unselected.size() && unselected[f]; }
 };
 
 namespace detail {
