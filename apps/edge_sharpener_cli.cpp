@@ -377,7 +377,8 @@ int main(int argc, char **argv) {
   app.add_option("output", cli.output, "where to write the result")->required();
   addTableOptions(app, cli);
   app.add_flag("--detect-only", cli.detectOnly,
-               "only detect: colour and select chamfer/corner faces, no geometry change");
+               "only detect: colour the labels and select the faces sharpening may change, no "
+               "geometry change");
   app.add_option("--reference", cli.reference,
                  "exact shape: print the two-sided (Metro) distance to it before and after")
       ->check(CLI::ExistingFile);

@@ -130,7 +130,22 @@ inline nlohmann::json reportToJson(const SharpenReport &r) {
                      {"resting_vertices_removed", r.evidence.restingVerticesRemoved},
                      {"vertices_removed", r.evidence.verticesRemoved},
                      {"faces_removed", r.evidence.facesRemoved},
-                     {"verdicts", verdicts}};
+                     {"verdicts", verdicts},
+                     {"cut_by_selection", r.evidence.cutBySelection}};
+  }
+  if (r.evidenceGuard) {
+    nlohmann::json features = nlohmann::json::array();
+    for (std::size_t c = 0; c < r.features.size(); ++c) {
+      const FeatureRecord &f = r.features[c];
+      features.push_back({{"id", c},
+                          {"kind", f.corner ? "corner" : "edge"},
+                          {"verdict", toString(f.verdict)},
+                          {"new_vertices", f.newVertices},
+                          {"width_spacings", f.widthSpacings},
+                          {"flank_angle_deg", f.flankAngleRad * 180 / M_PI},
+                          {"faces", f.faces}});
+    }
+    j["features"] = features;
   }
   j["summary"] = formatVerdictSummary(r);
   j["input_notes"] = formatInputNotes(r);

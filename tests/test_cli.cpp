@@ -12,8 +12,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -309,6 +311,24 @@ TEST(Cli, JsonVerdictsSumToTheFeatures) {
         sum += verdicts[key].get<std::size_t>();
       }
       EXPECT_EQ(sum, j["evidence"]["features"].get<std::size_t>()) << name << extra;
+      // Each feature listed, with the verdict the counts count and the faces it splits.
+      ASSERT_EQ(j["features"].size(), sum) << name << extra;
+      std::map<std::string, std::size_t> listed;
+      std::set<std::size_t> faces;
+      for (const auto &f : j["features"]) {
+        ++listed[f["verdict"].get<std::string>()];
+        EXPECT_GT(f["new_vertices"].get<std::size_t>(), 0u);
+        EXPECT_FALSE(f["faces"].empty());
+        for (const auto &face : f["faces"]) faces.insert(face.get<std::size_t>());
+        if (f["kind"] == "edge") {
+          EXPECT_GT(f["width_spacings"].get<double>(), 0.0) << name;
+          EXPECT_GT(f["flank_angle_deg"].get<double>(), 0.0) << name;
+        } else {
+          EXPECT_EQ(f["kind"], "corner");
+        }
+      }
+      for (const auto &[verdict, count] : listed) EXPECT_EQ(verdicts[verdict], count) << verdict;
+      EXPECT_LT(*faces.rbegin(), j["input"]["faces"].get<std::size_t>());
       EXPECT_GT(sum, 0u) << name;
       EXPECT_EQ(verdicts["restored"].get<std::size_t>() +
                     j["evidence"]["weak_features"].get<std::size_t>(),

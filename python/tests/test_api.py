@@ -322,6 +322,12 @@ def test_face_mask_leaves_a_designed_bevel_as_it_came():
     verdicts = report["evidence"]["verdicts"]
     assert verdicts["outside_selection"] >= 1 and verdicts["restored"] >= 10
     assert report["input_notes"].startswith(f"selection: {mask.sum()} of {len(faces)} faces")
+    # Every feature listed with its verdict; those left for the selection reach the bevel.
+    listed = [f["verdict"] for f in report["features"]]
+    assert {v: listed.count(v) for v in set(listed)} == {v: n for v, n in verdicts.items() if n}
+    for feature in report["features"]:
+        if feature["verdict"] == "outside_selection":
+            assert on_bevel[feature["faces"]].any(), feature
     exact = sample("bevelled_block_reference")
     def max_distance(v, f):
         return es.mesh_distance(v, f, exact["vertices"], exact["faces"], seed=1)["symmetric"]["max"]

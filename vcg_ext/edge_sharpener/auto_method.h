@@ -149,6 +149,11 @@ class AutoMethod {
   /// Every step's counts.
   const EvidenceStats &stats() const { return stats_; }
 
+  /// Every feature with its verdict (after the guards).
+  std::vector<FeatureRecord> featureRecords() const {
+    return guard_ ? guard_->records() : std::vector<FeatureRecord>{};
+  }
+
  private:
   MeshType &m_;
   const FeatureZones &zones_;

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "labels.h"
 
@@ -91,6 +92,22 @@ struct IntersectionStats {
 
 /// Stage 6c, auto method: features sent back whole for weak evidence
 /// (feature_evidence.h).
+/// One feature the auto method judged (SharpenReport::features): a chamfer
+/// strip between two smooth regions, or a cluster of corner vertices.
+struct FeatureRecord {
+  bool corner = false;
+  Verdict verdict = Verdict::Restored;
+  std::size_t newVertices = 0;
+  /// Edges: the median length of the chamfer edges it splits (from one
+  /// flank's border to the other's), in sample spacings; corners: 0.
+  double widthSpacings = 0;
+  /// Edges: the median angle at which its flanks' planes meet, in [0, pi/2]
+  /// (small for a shallow crease and for a knife edge); corners: 0.
+  double flankAngleRad = 0;
+  /// The input faces it splits, by index (a corner triangle is its corner's).
+  std::vector<std::size_t> faces;
+};
+
 struct EvidenceStats {
   std::size_t features = 0;      ///< features (inserted vertices joined through their sources)
   std::size_t weakFeatures = 0;  ///< of those, left as they were
@@ -115,6 +132,8 @@ struct EvidenceStats {
   /// Features per verdict (Verdict), each feature counted once.
   std::array<std::size_t, kVerdictCount> verdicts{};
   std::size_t count(Verdict v) const { return verdicts[static_cast<int>(v)]; }
+  /// Features with new vertices on both sides of the user's selection's border.
+  std::size_t cutBySelection = 0;
 };
 
 /// Extended method: segmentation and zone labelling.
@@ -156,6 +175,7 @@ struct SharpenReport {
   IntersectionStats intersections;
   bool evidenceGuard = false;  ///< the auto method's evidence guard ran
   EvidenceStats evidence;
+  std::vector<FeatureRecord> features;  ///< the auto method's, each with its verdict
   bool extendedMethod = false;
   ExtendedStats extended;        ///< filled by the extended method only
   bool geometryChanged = false;  ///< false for detection-only runs
@@ -353,10 +373,12 @@ inline std::string formatInputNotes(const SharpenReport &r) {
       << " faces";
     if (r.selectedFaces == 0)
       ;  // formatVerdictSummary says it
-    else if (r.evidenceGuard)
+    else if (r.evidenceGuard) {
       s << ", " << r.evidence.count(Verdict::OutsideSelection)
-        << " features outside it left as they came, those it cuts sharpened up to its border";
-    else
+        << " features outside it left as they came";
+      if (r.evidence.cutBySelection > 0)
+        s << ", " << r.evidence.cutBySelection << " it cuts sharpened up to its border";
+    } else
       s << ", the faces outside it neither split nor moved";
   }
   return s.str();

@@ -348,6 +348,7 @@ SharpenReport sharpenAuto(MeshType &m, const SharpenOptions &opt, const HeldFace
   autoMethod.giveBackResting(moves);
   report.evidenceGuard = true;
   report.evidence = autoMethod.stats();
+  report.features = autoMethod.featureRecords();
   finish(m, labels, opt, report);
   return report;
 }

@@ -538,6 +538,19 @@ inline std::vector<char> verticesOutsideSelection(const SplitPlan &plan, const H
   return outside;
 }
 
+/// The features with new vertices both inside and outside the user's
+/// selection (verticesOutsideSelection).
+inline std::size_t featuresCutBySelection(const SplitPlan &plan,
+                                          const std::vector<std::uint32_t> &featureOf,
+                                          const HeldFaces &held) {
+  if (held.unselected.empty()) return 0;
+  const std::vector<char> outside = verticesOutsideSelection(plan, held);
+  std::vector<char> side(
+      featureOf.empty() ? 0 : *std::max_element(featureOf.begin(), featureOf.end()) + 1, 0);
+  for (std::size_t k = 0; k < plan.inserted.size(); ++k) side[featureOf[k]] |= outside[k] ? 2 : 1;
+  return std::size_t(std::count(side.begin(), side.end(), 3));
+}
+
 /// Per feature, its verdict: every feature's Verdict::MeshEvidenceWeak when
 /// the mesh as a whole shows too little evidence (meshEvidenceIsWeak with the
 /// moves' median `lift`), else its own (judgeFeature, on a mesh sampled
@@ -684,6 +697,7 @@ class EvidenceGuard {
     out.verdicts = featureVerdicts(moves_.plan(), features_, featureOf_, stats.medianLift, surface_,
                                    opt_, exactSampling_, held_);
     stats.verdicts = countVerdicts(out.verdicts);
+    stats.cutBySelection = featuresCutBySelection(moves_.plan(), featureOf_, held_);
     for (std::size_t c = 0; c < features_.size(); ++c) {
       if (!out.left(c) || features_[c].moved == 0) continue;
       ++stats.weakFeatures;
@@ -706,6 +720,7 @@ class EvidenceGuard {
   /// flips, so its faces are the input's exactly.
   EvidenceStats revertWeakFeatures() {
     const Judgement judged = judge();
+    verdicts_ = judged.verdicts;
     EvidenceStats stats = judged.stats;
     const SplitPlan &plan = moves_.plan();
     const std::vector<char> kept = keptMoves(judged);
@@ -797,7 +812,45 @@ class EvidenceGuard {
     stats.weakFeatures = features_.size();
     stats.verdicts = {};
     stats.verdicts[static_cast<int>(Verdict::MeshEvidenceWeak)] = features_.size();
+    stats.cutBySelection = 0;
+    verdicts_.assign(features_.size(), Verdict::MeshEvidenceWeak);
     return true;
+  }
+
+  /// Every feature as the report lists it, with its verdict (final once the
+  /// guards have run); by feature index.
+  std::vector<FeatureRecord> records() const {
+    const SplitPlan &plan = moves_.plan();
+    std::vector<FeatureRecord> out(features_.size());
+    std::vector<std::vector<double>> widths(features_.size());
+    for (std::size_t c = 0; c < features_.size(); ++c) {
+      out[c].corner = features_[c].corner;
+      out[c].verdict = c < verdicts_.size() ? verdicts_[c] : Verdict::Restored;
+      out[c].flankAngleRad = features_[c].corner ? 0 : features_[c].flankAngleRad;
+    }
+    for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
+      const InsertedVertexSource &s = plan.inserted[k];
+      ++out[featureOf_[k]].newVertices;
+      if (s.originalCount == 2)
+        widths[featureOf_[k]].push_back(
+            (moves_.exactRest(s.original[0]) - moves_.exactRest(s.original[1])).Norm() /
+            spacingUnit(support_));
+    }
+    for (std::size_t c = 0; c < features_.size(); ++c)
+      if (!widths[c].empty()) out[c].widthSpacings = detail::medianOf(widths[c]);
+    for (const SplitFace &face : plan.faces) {
+      if (face.centerVertex >= 0) {
+        out[featureOf_[face.centerVertex]].faces.push_back(face.face);
+        continue;
+      }
+      std::uint32_t last = UINT32_MAX;
+      for (const int k : face.edgeVertex)
+        if (k >= 0 && featureOf_[k] != last) {
+          out[featureOf_[k]].faces.push_back(face.face);
+          last = featureOf_[k];
+        }
+    }
+    return out;
   }
 
   /// The features and each inserted vertex's feature (for the study).
@@ -815,7 +868,8 @@ class EvidenceGuard {
   const HeldFaces &held_;
   std::vector<Feature> features_;
   std::vector<std::uint32_t> featureOf_;
-  bool exactSampling_ = false;  ///< sampledExactly, set by judge()
+  bool exactSampling_ = false;     ///< sampledExactly, set by judge()
+  std::vector<Verdict> verdicts_;  ///< per feature, set by revertWeakFeatures()
   /// Per inserted vertex: in a feature already sharp, its own move slides,
   /// or it lies outside the user's selection (set by keptMoves). Such a
   /// vertex is neither moved nor refused (the input is sharp there, or the
