@@ -2,8 +2,10 @@
 // Input layout: byte 0 = vertex count - 3 (mod 48), byte 1 = options, then per
 // vertex 3 bytes (coordinates on a coarse grid, so that coincident and coplanar
 // vertices are frequent; byte 1 bit 7 adds sub-grid jitter from the following
-// bytes), then 3 bytes per face (indices mod the vertex count). Every mesh is
-// sharpened; refusals must leave it untouched, results must keep the invariants.
+// bytes), then 3 bytes per face (indices mod the vertex count). Byte 0 bit 7
+// sharpens only a selection (about half the faces, chosen by their index).
+// Every mesh is sharpened; refusals must leave it untouched, results must keep
+// the invariants.
 #include <cstddef>
 #include <cstdint>
 
@@ -34,6 +36,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   opt.edgeLengthCheck = !(flags & 8);
   opt.paper.convexityCheck = !(flags & 16);
   opt.degenerateAngleRad = ((flags >> 5) & 3) * M_PI / 180.0;  // 0 .. 3 degrees
+  if (data[0] & 0x80) {
+    opt.selectedFacesOnly = true;
+    for (std::size_t i = 0; i < nf; ++i)
+      if ((i * 2654435761u) & 0x100) m.face[i].SetS();
+  }
   es_fuzz::sharpenAndCheck(m, opt);
   return 0;
 }
