@@ -85,7 +85,7 @@ enum class Verdict : std::uint8_t {
   CornerOfWeakEdge,   ///< a corner one of whose edges was left
   AlreadySharp,       ///< its moves slide along the input: sharp there already
   AtNonManifoldSpot,  ///< it reaches a face held at a non-manifold spot
-  OutsideSelection,   ///< it splits a face outside the user's selection
+  OutsideSelection,   ///< all its new vertices lie on faces outside the user's selection
 };
 constexpr int kVerdictCount = 12;
 

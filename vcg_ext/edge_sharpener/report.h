@@ -90,8 +90,6 @@ struct IntersectionStats {
   std::size_t remaining = 0;          ///< intersecting pairs left alone: they intersect at rest too
 };
 
-/// Stage 6c, auto method: features sent back whole for weak evidence
-/// (feature_evidence.h).
 /// One feature the auto method judged (SharpenReport::features): a chamfer
 /// strip between two smooth regions, or a cluster of corner vertices.
 struct FeatureRecord {
@@ -108,6 +106,8 @@ struct FeatureRecord {
   std::vector<std::size_t> faces;
 };
 
+/// Stage 6c, auto method: features sent back whole for weak evidence
+/// (feature_evidence.h).
 struct EvidenceStats {
   std::size_t features = 0;      ///< features (inserted vertices joined through their sources)
   std::size_t weakFeatures = 0;  ///< of those, left as they were

@@ -526,8 +526,10 @@ inline bool meshEvidenceIsWeak(double refused, double lift, const SurfaceMeasure
 }
 
 /// Per inserted vertex (split plan order): whether it lies on a face outside
-/// the user's selection (HeldFaces::unselected), where it stays at rest.
+/// the user's selection (HeldFaces::unselected), where it stays at rest;
+/// empty without a selection.
 inline std::vector<char> verticesOutsideSelection(const SplitPlan &plan, const HeldFaces &held) {
+  if (held.unselected.empty()) return {};
   std::vector<char> outside(plan.inserted.size(), 0);
   for (const SplitFace &face : plan.faces) {
     if (!held.outsideSelection(face.face)) continue;
@@ -538,16 +540,14 @@ inline std::vector<char> verticesOutsideSelection(const SplitPlan &plan, const H
   return outside;
 }
 
-/// The features with new vertices both inside and outside the user's
-/// selection (verticesOutsideSelection).
-inline std::size_t featuresCutBySelection(const SplitPlan &plan,
+/// Of `featureCount` features, those with new vertices both inside and
+/// outside the user's selection (`outside`: verticesOutsideSelection).
+inline std::size_t featuresCutBySelection(const std::vector<char> &outside,
                                           const std::vector<std::uint32_t> &featureOf,
-                                          const HeldFaces &held) {
-  if (held.unselected.empty()) return 0;
-  const std::vector<char> outside = verticesOutsideSelection(plan, held);
-  std::vector<char> side(
-      featureOf.empty() ? 0 : *std::max_element(featureOf.begin(), featureOf.end()) + 1, 0);
-  for (std::size_t k = 0; k < plan.inserted.size(); ++k) side[featureOf[k]] |= outside[k] ? 2 : 1;
+                                          std::size_t featureCount) {
+  if (outside.empty()) return 0;
+  std::vector<char> side(featureCount, 0);
+  for (std::size_t k = 0; k < outside.size(); ++k) side[featureOf[k]] |= outside[k] ? 2 : 1;
   return std::size_t(std::count(side.begin(), side.end(), 3));
 }
 
@@ -579,8 +579,7 @@ inline std::vector<Verdict> featureVerdicts(const SplitPlan &plan,
     for (int i = 0; i < plan.inserted[k].originalCount; ++i)
       if (held.pins(plan.inserted[k].original[i]))
         verdict[featureOf[k]] = Verdict::AtNonManifoldSpot;
-  if (!held.unselected.empty()) {
-    const std::vector<char> outside = verticesOutsideSelection(plan, held);
+  if (const std::vector<char> outside = verticesOutsideSelection(plan, held); !outside.empty()) {
     std::vector<char> inside(features.size(), 0);
     for (std::size_t k = 0; k < plan.inserted.size(); ++k)
       if (!outside[k]) inside[featureOf[k]] = 1;
@@ -635,6 +634,7 @@ class EvidenceGuard {
       return v < support.region.size() ? support.region[v] : -1;
     };
     featureOf_ = groupFeatures(moves.plan(), regionOf, features_);
+    outsideSelection_ = verticesOutsideSelection(moves.plan(), held);
   }
 
   /// What the guard judges from the placement: each feature measured
@@ -697,7 +697,7 @@ class EvidenceGuard {
     out.verdicts = featureVerdicts(moves_.plan(), features_, featureOf_, stats.medianLift, surface_,
                                    opt_, exactSampling_, held_);
     stats.verdicts = countVerdicts(out.verdicts);
-    stats.cutBySelection = featuresCutBySelection(moves_.plan(), featureOf_, held_);
+    stats.cutBySelection = featuresCutBySelection(outsideSelection_, featureOf_, features_.size());
     for (std::size_t c = 0; c < features_.size(); ++c) {
       if (!out.left(c) || features_[c].moved == 0) continue;
       ++stats.weakFeatures;
@@ -759,13 +759,15 @@ class EvidenceGuard {
     slidingVertex_.assign(count, 0);
     retreatFirst_.assign(m_.vert.size(), 0);
     const auto sharpAlready = [&](std::size_t k) { return judged.alreadySharp(featureOf_[k]); };
-    const std::vector<char> outside = verticesOutsideSelection(plan, held_);
+    const auto outside = [&](std::size_t k) {
+      return !outsideSelection_.empty() && outsideSelection_[k];
+    };
     for (std::size_t k = 0; k < count; ++k) {
       if (m_.vert[first + k].IsD()) continue;
       // Not moved (lift -1): placement left it, nothing to cut back there.
       lifting[k] = judged.lifts[k] >= 0 && !mostlyAlreadySharp(judged.lifts[k], opt_);
       kept[k] = (sharpAlready(k) ? lifting[k] : !judged.left(featureOf_[k])) && !vertexIsWeak(k) &&
-                !outside[k];
+                !outside(k);
     }
     for (const SplitFace &face : plan.faces) {
       const int corner = face.centerVertex;
@@ -777,7 +779,7 @@ class EvidenceGuard {
     }
     for (std::size_t k = 0; k < count; ++k) {
       if (m_.vert[first + k].IsD()) continue;
-      slidingVertex_[k] = outside[k];  // at rest by the user's choice: not refused
+      slidingVertex_[k] = outside(k);  // at rest by the user's choice: not refused
       if (!sharpAlready(k)) continue;
       slidingVertex_[k] = slidingVertex_[k] || (!kept[k] && !lifting[k]);
       retreatFirst_[first + k] = kept[k];
@@ -868,8 +870,9 @@ class EvidenceGuard {
   const HeldFaces &held_;
   std::vector<Feature> features_;
   std::vector<std::uint32_t> featureOf_;
-  bool exactSampling_ = false;     ///< sampledExactly, set by judge()
-  std::vector<Verdict> verdicts_;  ///< per feature, set by revertWeakFeatures()
+  bool exactSampling_ = false;          ///< sampledExactly, set by judge()
+  std::vector<Verdict> verdicts_;       ///< per feature, set by revertWeakFeatures()
+  std::vector<char> outsideSelection_;  ///< verticesOutsideSelection (empty: no selection)
   /// Per inserted vertex: in a feature already sharp, its own move slides,
   /// or it lies outside the user's selection (set by keptMoves). Such a
   /// vertex is neither moved nor refused (the input is sharp there, or the
