@@ -220,15 +220,26 @@ TEST(Cli, DefaultOutputOfTheOtherMethodsAndModes) {
     EXPECT_GT(report["placement"]["moved"].get<int>(), 100);
     EXPECT_FALSE(report.contains("evidence"));
   }
+  // The default's Detect says what Sharpen would do; the others what they found.
   const CliRun detect = cli(quoted(in) + " " + quoted(out) + " --detect-only");
   ASSERT_EQ(detect.exitCode, 0) << detect.err;
   const auto lines = detect.lines();
   ASSERT_EQ(lines.size(), 4u) << detect.out;
-  EXPECT_TRUE(std::regex_match(lines[1], std::regex("detected: [1-9][0-9]* chamfer faces, [0-9]+ "
-                                                    "corner faces, [0-9]+ smooth-region faces; "
-                                                    "[1-9][0-9]* faces selected, those Sharpen may "
-                                                    "change \\(geometry unchanged\\)")))
+  EXPECT_TRUE(std::regex_match(lines[1], std::regex("detected, as Sharpen judges them: features: "
+                                                    "[1-9][0-9]* restored, .*; [1-9][0-9]* faces "
+                                                    "selected, those Sharpen changes \\(geometry "
+                                                    "unchanged\\)")))
       << lines[1];
+  const CliRun detectExtended =
+      cli(quoted(in) + " " + quoted(out) + " --detect-only --method extended");
+  ASSERT_EQ(detectExtended.exitCode, 0) << detectExtended.err;
+  ASSERT_EQ(detectExtended.lines().size(), 4u) << detectExtended.out;
+  EXPECT_TRUE(std::regex_match(detectExtended.lines()[1],
+                               std::regex("detected: [1-9][0-9]* chamfer faces, [0-9]+ "
+                                          "corner faces, [0-9]+ smooth-region faces; "
+                                          "[1-9][0-9]* faces selected, those Sharpen may "
+                                          "change \\(geometry unchanged\\)")))
+      << detectExtended.lines()[1];
   const fs::path edges = dir / "edges.obj";
   const CliRun withEdges = cli(quoted(in) + " " + quoted(out) + " --sharp-edges " + quoted(edges));
   ASSERT_EQ(withEdges.exitCode, 0) << withEdges.err;

@@ -577,7 +577,13 @@ py::array detectAs(const py::array &vertices, const py::array &faces, const py::
   const CheckedArrays<Real> arrays = checkArrays<Real>(vertices, faces);
   MeshType m;
   buildMesh(arrays, m);
-  runWithoutGil(progress, opt, [&] { es::detectChamfers(m, opt); });
+  // The labels, read back from the paper palette's colours below; the auto
+  // method's are the extended method's (the same zones), found without its
+  // run on a copy.
+  es::SharpenOptions labelled = opt;
+  labelled.colors = es::ColorScheme::Paper;
+  if (labelled.method == es::Method::Auto) labelled.method = es::Method::Extended;
+  runWithoutGil(progress, labelled, [&] { es::detectChamfers(m, labelled); });
   // detectChamfers() keeps its labels in scoped attributes, gone when it
   // returns; the face colours it paints (colorize.h) are their public form.
   const es::FaceLabel kLabels[] = {es::FaceLabel::Gray, es::FaceLabel::Red, es::FaceLabel::Chamfer,
@@ -758,7 +764,9 @@ PYBIND11_MODULE(_edge_sharpener, m) {
       "detect(vertices, faces, *, progress=None, tuning=None, **options) -> labels\n\n" +
       wrapped(
           "Runs detection only (no geometry change): a uint8 label per face, an index into "
-          "FACE_LABELS: 0 other, 1 smooth region, 2 chamfer, 3 corner.",
+          "FACE_LABELS: 0 other, 1 smooth region, 2 chamfer, 3 corner. The auto method's "
+          "verdict on each feature, and the faces it owns, are in sharpen()'s report "
+          "('features').",
           "") +
       "\n" + arraysDoc + options;
   static const std::string distanceDoc =

@@ -82,14 +82,15 @@ def test_lists_and_non_contiguous_arrays(cube):
 
 def test_options_come_from_the_table():
     keys = [o["key"] for o in es.OPTIONS]
-    assert keys[:5] == ["method", "multiplier", "edge_length_check", "colorize", "degenerate_angle_deg"]
-    assert [o["key"] for o in es.ordinary_options()] == keys[:5]
+    assert keys[:6] == ["method", "multiplier", "edge_length_check", "colorize", "colors",
+                        "degenerate_angle_deg"]
+    assert [o["key"] for o in es.ordinary_options()] == keys[:6]
     _, _, report = es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F)
     for option in es.OPTIONS:  # defaults: the report's options record the table's defaults
         assert report["options"][option["key"]] == option["default"], option["key"]
         assert option["key"] in es.sharpen.__doc__ and option["key"] in es.detect.__doc__
     # The ordinary options are keywords, the others each method's tuning.
-    assert [o["key"] for o in es.tuning_options()] == keys[5:]
+    assert [o["key"] for o in es.tuning_options()] == keys[6:]
     assert all(o["group"].startswith("Tuning: ") for o in es.tuning_options())
     # Every option can be given; the values come back in the report.
     _, _, report = es.sharpen(OCTAHEDRON_V, OCTAHEDRON_F, method="extended", multiplier=1.5,

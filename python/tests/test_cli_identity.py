@@ -82,6 +82,23 @@ def test_sharpen_colorize_matches_cli(cli, tmp_path):
         assert np.array_equal(report["colors"][key], expected)
 
 
+RESTORED_GREEN = (40, 170, 70)  # docs/plugin.md, colours by verdict
+
+
+@pytest.mark.parametrize("colors", ["verdict", "paper"])
+def test_default_colorize_matches_cli(colors, cli, tmp_path):
+    """The default paints by verdict (the restored features green), or the paper's labels."""
+    mesh = sample("lblock_mc2")
+    run_cli(SAMPLES / "lblock_mc2.ply", tmp_path / "out.ply", {"colorize": True, "colors": colors})
+    cli_out = read_ply(tmp_path / "out.ply")
+    _, _, report = es.sharpen(mesh["vertices"], mesh["faces"], colorize=True, colors=colors)
+    faces = np.stack([cli_out[f"face_{c}"] for c in ("red", "green", "blue", "alpha")], axis=1)
+    assert np.array_equal(report["colors"]["faces"], faces)
+    green = (faces[:, :3] == RESTORED_GREEN).all(axis=1).sum()
+    restored = sum(f["verdict"] == "restored" for f in report["features"])
+    assert (green > 0) == (colors == "verdict") and restored > 0
+
+
 @pytest.mark.parametrize("sampling", ["uniform", "meshlab"])
 @pytest.mark.parametrize("name", ["cube", "lblock"])
 def test_mesh_distance_matches_cli(name, sampling, tmp_path):

@@ -2,8 +2,9 @@
 # GUI: the real `meshlab` under Xvfb loads the plugin without errors on stderr;
 # xdotool opens a chamfered mesh, finds "Edge-Sharpener: Sharpen Chamfered Edges"
 # in Filters > Smoothing, Fairing and Deformation, ticks Colorize and applies it;
-# the screenshot (imagemagick) must show the painted labels. Screenshots are kept
-# in the test's work dir (build tree): meshlab-sharpen.png is the final one.
+# the screenshot (imagemagick) must show the painted verdicts (restored features
+# green). Screenshots are kept in the test's work dir (build tree):
+# meshlab-sharpen.png is the final one.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 for tool in xdotool import convert; do
   command -v $tool >/dev/null || fail "$tool not found (Debian packages xdotool, imagemagick)"
@@ -11,7 +12,7 @@ done
 [[ -n ${ES_MENU_TOOL:-} && -x ${ES_MENU_TOOL:-} ]] || fail "list_filter_menu not built"
 
 FILTER="Edge-Sharpener: Sharpen Chamfered Edges"
-PARAMS=(method smoothMultiplier edgeLengthCheck colorize degenerateAngleDeg Selected)  # dialog order
+PARAMS=(method smoothMultiplier edgeLengthCheck colorize colors degenerateAngleDeg Selected)  # dialog order
 
 # Position of the filter in its submenu (0x80 = Smoothing class), as the GUI sorts it.
 rc=0
@@ -42,15 +43,15 @@ grep -iE 'error|fail|cannot|abort|assert|segmentation|undefined symbol|QPluginLo
 [[ ! -s stderr_problems.txt ]] || { cat stderr_problems.txt >&2; fail "MeshLab wrote errors on stderr"; }
 grep -q 'LOG: .*subdivision: ' meshlab.stderr || fail "no Edge-Sharpener report in MeshLab's log"
 
-# The painted labels are on screen: smooth regions are red (220, 50, 40), so the 3D
-# view goes from (almost) no red pixel to many.
-red_fraction() {
+# The painted verdicts are on screen: the restored features are green (40, 170, 70),
+# so the 3D view goes from (almost) no green pixel to some.
+green_fraction() {
   convert "$1" -crop 840x780+5+75 +repage \
-    -fx '(r > 0.35 && r > 1.8 * g && r > 1.8 * b) ? 1 : 0' -format '%[fx:mean]' info:
+    -fx '(g > 0.3 && g > 1.6 * r && g > 1.6 * b) ? 1 : 0' -format '%[fx:mean]' info:
 }
-before=$(red_fraction before.png)
-after=$(red_fraction meshlab-sharpen.png)
-log "red pixels in the 3D view: $before before, $after after"
-awk -v b="$before" -v a="$after" 'BEGIN { exit !(b < 0.005 && a > 0.05) }' ||
-  fail "the screenshot does not show the painted labels (red fraction $before -> $after)"
+before=$(green_fraction before.png)
+after=$(green_fraction meshlab-sharpen.png)
+log "green pixels in the 3D view: $before before, $after after"
+awk -v b="$before" -v a="$after" 'BEGIN { exit !(b < 0.002 && a > 0.01) }' ||
+  fail "the screenshot does not show the painted verdicts (green fraction $before -> $after)"
 log "screenshot: $ES_WORK_DIR/meshlab-sharpen.png"

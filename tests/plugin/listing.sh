@@ -28,10 +28,12 @@ check_filter "Edge-Sharpener: Sharpen Chamfered Edges" "Enum|Method
 Float|Smooth-edge multiplier
 Bool|Edge-length check
 Bool|Colorize
+Enum|Colours
 Float|Degenerate angle (deg)
 Bool|Affect only selected faces"
 check_filter "Edge-Sharpener: Detect Chamfers" "Enum|Method
-Float|Smooth-edge multiplier"
+Float|Smooth-edge multiplier
+Enum|Colours"
 
 total=$(sed -n 's/^Total \([0-9]*\) filtering actions.*/\1/p' listing.out)
 log "meshlabserver reports $total filtering actions"

@@ -241,8 +241,9 @@ TEST(MeshesPeopleHave, PartsAtDifferentSpacingsAreEachSharpenedAtTheirOwn) {
 
 namespace {
 
-// Detect selects what the report counts: the chamfer and corner faces left after the
-// faces at the spots are held (MeshLab's detect test reads the two from the log).
+// Detect selects what the report counts: the paper's, the chamfer and corner faces left
+// after the faces at the spots are held; the default's, the faces Sharpen changes, never
+// one held at a spot (MeshLab's detect test reads the count from the log).
 TEST(NonManifoldSpots, DetectSelectsWhatTheReportCounts) {
   es::Mesh input;
   copy(input, cleanLBlock());
@@ -258,7 +259,13 @@ TEST(NonManifoldSpots, DetectSelectsWhatTheReportCounts) {
     std::size_t selected = 0;
     for (const auto &f : m.face) selected += f.IsS();
     EXPECT_GT(r.nonManifold.heldFaces, 0u);
-    EXPECT_EQ(selected, r.filters.chamferFaces + r.filters.cornerFaces);
+    EXPECT_EQ(selected, r.detectedFaces);
+    if (method == es::Method::Paper) {
+      EXPECT_EQ(selected, r.filters.chamferFaces + r.filters.cornerFaces);
+    } else {  // the faces Sharpen changes: never one held at the spot
+      EXPECT_GT(selected, 0u);
+      EXPECT_FALSE(m.face[r.nonManifold.firstHeldFace].IsS());
+    }
   }
 }
 

@@ -2,6 +2,8 @@
 // faces of a designed bevel; its features are left whole, its vertices come
 // out bit for bit as they came, every other feature is sharpened as without a
 // selection, and the output is not farther from the exact shape than the input.
+// And what the user sees before choosing (point 1): Detect selects the faces
+// Sharpen changes, and both paint each feature by its verdict.
 #include <gtest/gtest.h>
 #include <vcg/complex/complex.h>
 // (append.h is included by complex.h)
@@ -13,7 +15,9 @@
 #include <tuple>
 #include <vector>
 
+#include "edge_sharpener/colorize.h"
 #include "edge_sharpener/edge_sharpener.h"
+#include "edge_sharpener/restored_edges.h"
 #include "edge_sharpener/util/mesh_types.h"
 #include "mesh_distance.h"
 #include "reliability/invariants.h"
@@ -160,10 +164,10 @@ TEST_P(SelectionWithoutABevel, LeavesTheBevelAndSharpensTheRest) {
       after / shape.diagonal(), maxDistance(whole, reference) / shape.diagonal());
 }
 
-// The workflow: Detect selects the chamfer and corner faces, the user
-// deselects the bevel's, Sharpen affects only the selected faces. The smooth
-// regions left unselected change nothing (their vertices never move): the
-// same output as with every face but the bevel's selected.
+// The workflow: Detect selects the faces Sharpen changes, the user deselects
+// the bevel's, Sharpen affects only the selected faces. The faces Detect
+// leaves unselected hold no move: the same output as with every face but the
+// bevel's selected.
 TEST_P(SelectionWithoutABevel, DetectThenDeselectGivesTheSame) {
   const es::Mesh &input = bevelledBlock();
   const std::vector<char> onBevel = bevelFaces(input, GetParam());
@@ -171,18 +175,20 @@ TEST_P(SelectionWithoutABevel, DetectThenDeselectGivesTheSame) {
   copy(detected, input);
   es::detectChamfers(detected);
   std::vector<char> detectedButBevel(onBevel.size()), allButBevel(onBevel.size());
-  std::size_t chamferFaces = 0;
+  std::size_t selectedFaces = 0, bevelSelected = 0;
   for (std::size_t f = 0; f < onBevel.size(); ++f) {
     detectedButBevel[f] = detected.face[f].IsS() && !onBevel[f];
     allButBevel[f] = !onBevel[f];
-    chamferFaces += detected.face[f].IsS();
+    selectedFaces += detected.face[f].IsS();
+    bevelSelected += detected.face[f].IsS() && onBevel[f];
   }
-  ASSERT_GT(chamferFaces, 100u);
-  ASSERT_LT(chamferFaces, input.face.size() / 2);
+  ASSERT_GT(selectedFaces, 100u);
+  ASSERT_LT(selectedFaces, input.face.size() / 2);
+  EXPECT_GT(bevelSelected, 0u) << "the default restores no feature of the bevel: nothing to show";
   es::Mesh viaDetect, viaAll;
   const es::SharpenReport rd = sharpenSelected(input, viaDetect, detectedButBevel);
   const es::SharpenReport ra = sharpenSelected(input, viaAll, allButBevel);
-  EXPECT_EQ(rd.evidence.verdicts, ra.evidence.verdicts);
+  EXPECT_EQ(rd.evidence.count(es::Verdict::Restored), ra.evidence.count(es::Verdict::Restored));
   ASSERT_EQ(viaDetect.vert.size(), viaAll.vert.size());
   for (std::size_t v = 0; v < viaAll.vert.size(); ++v)
     ASSERT_EQ(viaDetect.vert[v].cP(), viaAll.vert[v].cP()) << "vertex " << v;
@@ -263,6 +269,140 @@ TEST(Selection, PaperAndExtendedKeepEveryFaceOutsideIt) {
       for (const std::size_t v : face) ASSERT_EQ(out.vert[v].cP(), input.vert[v].cP());
     }
   }
+}
+
+// Detect's selection, taken as it is: Sharpen does with it what it does
+// without a selection (the faces it leaves unselected hold no move), and
+// says what Sharpen would do, the mesh unchanged.
+TEST(Detect, ItsSelectionIsWhatSharpenChanges) {
+  const es::Mesh &input = bevelledBlock();
+  es::Mesh detected, whole;
+  copy(detected, input);
+  copy(whole, input);
+  const es::SharpenReport rd = es::detectChamfers(detected);
+  const es::SharpenReport rw = es::sharpen(whole);
+  EXPECT_FALSE(rd.geometryChanged);
+  EXPECT_EQ(rd.evidence.verdicts, rw.evidence.verdicts);
+  for (std::size_t v = 0; v < input.vert.size(); ++v)
+    ASSERT_EQ(detected.vert[v].cP(), input.vert[v].cP());
+  std::vector<char> selected(input.face.size());
+  for (std::size_t f = 0; f < selected.size(); ++f) selected[f] = detected.face[f].IsS();
+  EXPECT_EQ(rd.detectedFaces, std::size_t(std::count(selected.begin(), selected.end(), 1)));
+  EXPECT_NE(es::formatVerdictSummary(rd).find("detected, as Sharpen judges them: features: "),
+            std::string::npos);
+  es::Mesh viaDetect;
+  sharpenSelected(input, viaDetect, selected);
+  ASSERT_EQ(viaDetect.vert.size(), whole.vert.size());
+  ASSERT_EQ(viaDetect.face.size(), whole.face.size());
+  for (std::size_t v = 0; v < whole.vert.size(); ++v)
+    ASSERT_EQ(viaDetect.vert[v].cP(), whole.vert[v].cP()) << "vertex " << v;
+}
+
+// The verdict colours: one per verdict and one for no feature, all distinct,
+// so the legend reads each; where a face belongs to several features, a
+// restored one wins.
+TEST(VerdictColors, DistinctAndRestoredFirst) {
+  std::set<std::tuple<int, int, int>> seen{
+      {es::noFeatureColor()[0], es::noFeatureColor()[1], es::noFeatureColor()[2]}};
+  for (int i = 0; i < es::kVerdictCount; ++i) {
+    const vcg::Color4b c = es::verdictColor(es::Verdict(i));
+    EXPECT_TRUE(seen.insert({c[0], c[1], c[2]}).second) << es::toString(es::Verdict(i));
+  }
+  const auto restored = std::int8_t(es::Verdict::Restored);
+  const auto weak = std::int8_t(es::Verdict::OffItsPlanes);
+  EXPECT_EQ(es::firstVerdict(weak, restored), restored);
+  EXPECT_EQ(es::firstVerdict(restored, weak), restored);
+  EXPECT_EQ(es::firstVerdict(es::kNoVerdict, weak), weak);
+  EXPECT_EQ(es::firstVerdict(weak, es::kNoVerdict), weak);
+  std::vector<es::FeatureRecord> features(2);
+  features[0].verdict = es::Verdict::OffItsPlanes;
+  features[0].faces = {1, 2};
+  features[1].verdict = es::Verdict::Restored;
+  features[1].faces = {2, 3, 9};  // 9: beyond the faces, ignored
+  EXPECT_EQ(es::featureFaceVerdicts(features, 5),
+            (es::FaceVerdicts{es::kNoVerdict, weak, restored, restored, es::kNoVerdict}));
+}
+
+std::size_t facesOfColor(const es::Mesh &m, const vcg::Color4b &c) {
+  std::size_t n = 0;
+  for (const auto &f : m.face) n += !f.IsD() && f.cC() == c;
+  return n;
+}
+
+// Sharpen --colorize by verdict: the colours change no position; every face
+// with a vertex placed on a sharp edge is restored green (or already-sharp
+// blue); the features left show their reasons. Detect paints the input's
+// faces from the same verdicts.
+TEST(VerdictColors, PaintWhatTheRunDid) {
+  const es::Mesh &input = bevelledBlock();
+  es::Mesh plain, painted, detected;
+  copy(plain, input);
+  copy(painted, input);
+  copy(detected, input);
+  es::SharpenOptions opt;
+  const es::SharpenReport r = es::sharpen(plain, opt);
+  opt.colorize = true;
+  auto restoredAttr = vcg::tri::Allocator<es::Mesh>::AddPerVertexAttribute<std::uint8_t>(
+      painted, es::kRestoredVertexAttribute);
+  es::sharpen(painted, opt);
+  ASSERT_EQ(painted.vert.size(), plain.vert.size());
+  for (std::size_t v = 0; v < plain.vert.size(); ++v)
+    ASSERT_EQ(painted.vert[v].cP(), plain.vert[v].cP());
+  const vcg::Color4b green = es::verdictColor(es::Verdict::Restored);
+  const vcg::Color4b blue = es::verdictColor(es::Verdict::AlreadySharp);
+  std::size_t onRestored = 0;
+  for (const auto &f : painted.face) {
+    bool restoredVertex = false;
+    for (int i = 0; i < 3; ++i) restoredVertex = restoredVertex || restoredAttr[f.cV(i)];
+    if (!restoredVertex) continue;
+    ++onRestored;
+    EXPECT_TRUE(f.cC() == green || f.cC() == blue) << "face " << vcg::tri::Index(painted, f);
+  }
+  EXPECT_GT(onRestored, 100u);
+  std::size_t leftVerdicts = 0, leftFaces = 0;
+  for (int i = 1; i < es::kVerdictCount; ++i) {
+    const std::size_t n = facesOfColor(painted, es::verdictColor(es::Verdict(i)));
+    leftFaces += n;
+    leftVerdicts += r.evidence.verdicts[i] > 0;
+    if (r.evidence.verdicts[i] == 0) EXPECT_EQ(n, 0u) << es::toString(es::Verdict(i));
+  }
+  EXPECT_GT(leftVerdicts, 0u) << "bevelled_block has features left: the test needs them";
+  EXPECT_GT(leftFaces, 0u);
+  EXPECT_GT(facesOfColor(painted, es::noFeatureColor()), painted.face.size() / 2);
+
+  es::detectChamfers(detected);
+  const es::FaceVerdicts verdicts = es::featureFaceVerdicts(r.features, input.face.size());
+  for (std::size_t f = 0; f < input.face.size(); ++f) {
+    const vcg::Color4b expected = verdicts[f] == es::kNoVerdict
+                                      ? es::noFeatureColor()
+                                      : es::verdictColor(es::Verdict(verdicts[f]));
+    ASSERT_EQ(detected.face[f].cC(), expected) << "face " << f;
+  }
+  vcg::tri::Allocator<es::Mesh>::DeletePerVertexAttribute(painted, restoredAttr);
+}
+
+// The paper's palette stays available: with colors = paper, Detect paints
+// the zone labels as the extended method's Detect does, and selects what
+// the default changes all the same.
+TEST(VerdictColors, PaperPaletteOnRequest) {
+  const es::Mesh &input = bevelledBlock();
+  es::Mesh byVerdict, byPaper, extended;
+  copy(byVerdict, input);
+  copy(byPaper, input);
+  copy(extended, input);
+  es::detectChamfers(byVerdict);
+  es::SharpenOptions opt;
+  opt.colors = es::ColorScheme::Paper;
+  es::detectChamfers(byPaper, opt);
+  opt.method = es::Method::Extended;
+  es::detectChamfers(extended, opt);
+  std::size_t red = 0;
+  for (std::size_t f = 0; f < input.face.size(); ++f) {
+    ASSERT_EQ(byPaper.face[f].cC(), extended.face[f].cC()) << "face " << f;
+    ASSERT_EQ(byPaper.face[f].IsS(), byVerdict.face[f].IsS()) << "face " << f;
+    red += byPaper.face[f].cC() == es::faceLabelColor(es::FaceLabel::Red);
+  }
+  EXPECT_GT(red, input.face.size() / 2);
 }
 
 }  // namespace

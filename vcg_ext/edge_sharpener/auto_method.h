@@ -149,6 +149,13 @@ class AutoMethod {
   /// Every step's counts.
   const EvidenceStats &stats() const { return stats_; }
 
+  /// Per face of the mesh as it is now, the verdict its colour shows
+  /// (EvidenceGuard::outputFaceVerdicts; all kNoVerdict before judgeFeatures()).
+  FaceVerdicts outputFaceVerdicts(std::size_t inputFaceCount) const {
+    return guard_ ? guard_->outputFaceVerdicts(inputFaceCount)
+                  : FaceVerdicts(m_.face.size(), kNoVerdict);
+  }
+
   /// Every feature with its verdict (after the guards).
   std::vector<FeatureRecord> featureRecords() const {
     return guard_ ? guard_->records() : std::vector<FeatureRecord>{};

@@ -1,15 +1,18 @@
-// Optional final step: paints the labels with the paper's palette so a user
-// can inspect what was detected and what happened to each inserted vertex.
-// Faces: smooth region red, chamfer (and its children) blue, corner green,
-// others grey. Vertices: red-region vertices red, others grey; inserted
-// vertices by outcome (see placementColor()).
+// Optional final step, for inspection only: paints either each feature's
+// faces by the auto method's verdict on it (verdictColor), or the labels
+// with the paper's palette, to see what was detected and what happened to
+// each inserted vertex. Paper's faces: smooth region red, chamfer (and its
+// children) blue, corner green, others grey. Vertices: red-region vertices
+// red, others grey; inserted vertices by outcome (see placementColor()).
 #pragma once
 
 #include <vcg/space/color4.h>
 
+#include <cstdint>
 #include <vector>
 
 #include "extended/zones.h"
+#include "report.h"
 #include "util/mesh_labels.h"
 #include "util/non_manifold.h"
 
@@ -48,6 +51,56 @@ inline vcg::Color4b placementColor(Placement p, VertexLabel label) {
     case Placement::WeakEvidence: return vcg::Color4b(128, 128, 0, 255);
   }
   return vcg::Color4b(160, 160, 160, 255);
+}
+
+/// The verdict scheme (ColorScheme::Verdict): a feature's faces in the
+/// colour of the auto method's verdict on it. Restored green, left already
+/// sharp blue, outside the user's selection white; each reason for leaving
+/// a feature weak its own warm or muted colour.
+inline vcg::Color4b verdictColor(Verdict v) {
+  switch (v) {
+    case Verdict::Restored: return vcg::Color4b(40, 170, 70, 255);
+    case Verdict::MeshEvidenceWeak: return vcg::Color4b(150, 110, 60, 255);
+    case Verdict::OnTheSurface: return vcg::Color4b(235, 150, 30, 255);
+    case Verdict::TooShort: return vcg::Color4b(245, 215, 60, 255);
+    case Verdict::ShallowAngle: return vcg::Color4b(120, 200, 235, 255);
+    case Verdict::LineAcrossChamfer: return vcg::Color4b(150, 90, 200, 255);
+    case Verdict::OffItsPlanes: return vcg::Color4b(220, 55, 45, 255);
+    case Verdict::MostlyRefused: return vcg::Color4b(230, 95, 170, 255);
+    case Verdict::CornerOfWeakEdge: return vcg::Color4b(245, 180, 140, 255);
+    case Verdict::AlreadySharp: return vcg::Color4b(40, 90, 220, 255);
+    case Verdict::AtNonManifoldSpot: return vcg::Color4b(50, 50, 50, 255);
+    case Verdict::OutsideSelection: return vcg::Color4b(250, 250, 250, 255);
+  }
+  return vcg::Color4b(160, 160, 160, 255);
+}
+
+/// The verdict scheme's colour of a face no feature judged.
+inline vcg::Color4b noFeatureColor() {
+  return vcg::Color4b(170, 170, 170, 255);
+}
+
+/// Paints faces by `faceVerdict` (by face index) and each vertex in the
+/// colour of its faces' first verdict (verdictRank), where the mesh has
+/// those colours.
+template <class MeshType>
+void paintVerdicts(MeshType &m, const FaceVerdicts &faceVerdict) {
+  const auto color = [](std::int8_t v) {
+    return v == kNoVerdict ? noFeatureColor() : verdictColor(Verdict(v));
+  };
+  FaceVerdicts vertexVerdict(m.vert.size(), kNoVerdict);
+  for (std::size_t f = 0; f < m.face.size() && f < faceVerdict.size(); ++f) {
+    auto &face = m.face[f];
+    if (face.IsD()) continue;
+    if (vcg::tri::HasPerFaceColor(m)) face.C() = color(faceVerdict[f]);
+    for (int k = 0; k < 3; ++k) {
+      std::int8_t &v = vertexVerdict[vcg::tri::Index(m, face.V(k))];
+      v = firstVerdict(v, faceVerdict[f]);
+    }
+  }
+  if (vcg::tri::HasPerVertexColor(m))
+    for (std::size_t v = 0; v < m.vert.size(); ++v)
+      if (!m.vert[v].IsD()) m.vert[v].C() = color(vertexVerdict[v]);
 }
 
 /// Paints face colours (if the mesh has them) and vertex colours (likewise).

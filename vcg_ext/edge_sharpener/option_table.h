@@ -138,10 +138,20 @@ inline const std::vector<OptionSpec> &optionTable() {
        "Figure 7). Keep it on: without it, nearly parallel planes can send vertices far away.",
        T::Flag, G::Ordinary, "", 0, 1, false, kInSharpen, {}, {}, ES_FLAG(edgeLengthCheck)},
       {"colorize", "--colorize", "colorize", "Colorize",
-       "Paint the labels into per-face colour (smooth regions red, chamfer triangles blue, "
-       "corner triangles green, others grey) and per-vertex colour (inserted vertices: moved "
-       "yellow, kept at the midpoint by a fallback in another colour).",
+       "Paint per-face and per-vertex colour for inspection, in the scheme --colors names.",
        T::Flag, G::Ordinary, "", 0, 1, false, kInSharpen, {}, {}, ES_FLAG(colorize)},
+      {"colors", "--colors", "colors", "Colours",
+       "What --colorize and Detect paint. verdict (the default): the faces of each feature the "
+       "auto method judged by its verdict (restored green, already sharp blue, outside the "
+       "selection white, each reason for leaving it its own colour: docs/plugin.md has the "
+       "legend), other faces grey. paper: the paper's labels (smooth regions red, chamfer "
+       "triangles blue, corner triangles green, others grey; inserted vertices moved yellow, "
+       "kept at rest by a fallback in another colour). The paper and extended methods judge no "
+       "feature: they always paint the paper's labels.",
+       T::Choice, G::Ordinary, "", 0, 1, false, kBoth,
+       {"verdict", "paper"}, {"By verdict", "Paper's labels"},
+       [](const SharpenOptions &o) { return double(int(o.colors)); },
+       [](SharpenOptions &o, double v) { o.colors = ColorScheme(int(v)); }},
       {"degenerate_angle_deg", "--degenerate-angle", "degenerateAngleDeg", "Degenerate angle (deg)",
        "After sharpening, new triangles with an angle below this many degrees are removed "
        "(paper: 1 degree).",

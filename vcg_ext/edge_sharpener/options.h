@@ -21,6 +21,12 @@ enum class Method {
              ///< (feature_evidence.h); the default
 };
 
+/// What SharpenOptions::colorize and detectChamfers() paint.
+enum class ColorScheme {
+  Verdict,  ///< each feature's faces by the auto method's verdict on it (colorize.h: verdictColor)
+  Paper,    ///< the paper's labels: smooth region, chamfer, corner (colorize.h: faceLabelColor)
+};
+
 /// Options of sharpen() and detectChamfers(). Angles are in radians.
 struct SharpenOptions {
   Method method = Method::Auto;
@@ -33,9 +39,13 @@ struct SharpenOptions {
   /// edge of the input (paper, Figure 7). Off only for experiments.
   bool edgeLengthCheck = true;
 
-  /// Paint the paper's palette into face/vertex colours (needs per-face and
-  /// per-vertex colour on the mesh).
+  /// Paint face/vertex colours for inspection (needs per-face and per-vertex
+  /// colour on the mesh), in the scheme `colors` names.
   bool colorize = false;
+  /// The auto method paints by verdict unless the paper's labels are asked
+  /// for; the paper and extended methods judge no feature and always paint
+  /// the paper's labels.
+  ColorScheme colors = ColorScheme::Verdict;
 
   /// Triangles with an angle below this are degenerate and removed after
   /// sharpening (paper: 1 degree).

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -102,9 +103,40 @@ struct FeatureRecord {
   /// Edges: the median angle at which its flanks' planes meet, in [0, pi/2]
   /// (small for a shallow crease and for a knife edge); corners: 0.
   double flankAngleRad = 0;
-  /// The input faces it splits, by index (a corner triangle is its corner's).
+  /// The input faces it splits, by index (a corner triangle is its corner's
+  /// and that of each edge whose new vertex lies on it).
   std::vector<std::size_t> faces;
 };
+
+/// Per face, the verdict of the feature it belongs to (featureFaceVerdicts,
+/// EvidenceGuard::outputFaceVerdicts), or kNoVerdict; what the verdict
+/// colours paint (colorize.h).
+using FaceVerdicts = std::vector<std::int8_t>;
+inline constexpr std::int8_t kNoVerdict = -1;
+
+/// Where a face or vertex belongs to several features: which verdict it
+/// takes. A restored feature first (it is what changed), then the reasons to leave
+/// one in the enum's order, then no feature.
+inline int verdictRank(std::int8_t v) {
+  if (v == kNoVerdict) return kVerdictCount + 1;
+  return v == std::int8_t(Verdict::Restored) ? 0 : 1 + v;
+}
+
+/// `current` or `candidate`, whichever verdictRank puts first.
+inline std::int8_t firstVerdict(std::int8_t current, std::int8_t candidate) {
+  return verdictRank(candidate) < verdictRank(current) ? candidate : current;
+}
+
+/// The input faces' verdicts from the report's features (each feature's
+/// faces, by input index); kNoVerdict where none judged the face.
+inline FaceVerdicts featureFaceVerdicts(const std::vector<FeatureRecord> &features,
+                                        std::size_t faceCount) {
+  FaceVerdicts out(faceCount, kNoVerdict);
+  for (const FeatureRecord &r : features)
+    for (const std::size_t f : r.faces)
+      if (f < faceCount) out[f] = firstVerdict(out[f], std::int8_t(r.verdict));
+  return out;
+}
 
 /// Stage 6c, auto method: features sent back whole for weak evidence
 /// (feature_evidence.h).
@@ -302,17 +334,53 @@ inline std::string formatReport(const SharpenReport &r) {
   return s.str();
 }
 
+namespace detail {
+
+/// "features: 14 restored, 3 left as they were: 2 too short, 1 shallow angle"
+inline void formatVerdictCounts(std::ostream &s, const EvidenceStats &e) {
+  std::size_t features = 0;
+  for (const std::size_t n : e.verdicts) features += n;
+  if (features == 0) {
+    s << "features: none found to restore";
+    return;
+  }
+  const std::size_t restored = e.count(Verdict::Restored);
+  s << "features: " << restored << " restored, ";
+  if (restored == features) {
+    s << "none left";
+    return;
+  }
+  s << features - restored << " left as they were:";
+  const char *separator = " ";
+  for (int i = 0; i < kVerdictCount; ++i) {
+    const auto v = static_cast<Verdict>(i);
+    if (!isLeft(v) || e.verdicts[i] == 0) continue;
+    s << separator << e.verdicts[i] << " " << describe(v);
+    separator = ", ";
+  }
+}
+
+}  // namespace detail
+
 /// What was restored and what was left, in one line without a newline (the
 /// CLI's default output, the MeshLab log, the JSON report's "summary"):
 ///   auto:      "features: 14 restored, 3 left as they were: 2 too short, 1 shallow angle"
 ///              (each verdict that occurred, in describe()'s words)
 ///   paper, extended: "new vertices: 120 placed on sharp edges, 8 left at rest"
-///   detection only:  "detected: 686 chamfer faces, 12 corner faces, 6722 smooth-region faces;
-///                     740 faces selected, those Sharpen may change"
+///   detection only, auto: "detected, as Sharpen judges them: features: 14 restored, ...;
+///                          740 faces selected, those Sharpen changes (geometry unchanged)"
+///   detection only, others: "detected: 686 chamfer faces, 12 corner faces, 6722
+///                     smooth-region faces; 740 faces selected, those Sharpen may change"
 inline std::string formatVerdictSummary(const SharpenReport &r) {
   std::ostringstream s;
   if (r.selectedFacesOnly && r.selectedFaces == 0)
     return "nothing selected: the mesh is left as it came";
+  if (!r.geometryChanged && r.evidenceGuard) {
+    s << "detected, as Sharpen judges them: ";
+    detail::formatVerdictCounts(s, r.evidence);
+    s << "; " << r.detectedFaces << " faces selected, those Sharpen changes (geometry unchanged)";
+    return s.str();
+  }
   if (!r.geometryChanged) {
     s << "detected: " << r.filters.chamferFaces << " chamfer faces, " << r.filters.cornerFaces
       << " corner faces, " << r.filters.redFaces << " smooth-region faces; " << r.detectedFaces
@@ -320,29 +388,9 @@ inline std::string formatVerdictSummary(const SharpenReport &r) {
     return s.str();
   }
   if (r.evidenceGuard) {
-    const EvidenceStats &e = r.evidence;
-    std::size_t features = 0;
-    for (const std::size_t n : e.verdicts) features += n;
-    if (features == 0) {
-      s << "features: none found to restore";
-    } else {
-      const std::size_t restored = e.count(Verdict::Restored);
-      s << "features: " << restored << " restored, ";
-      if (restored == features) {
-        s << "none left";
-      } else {
-        s << features - restored << " left as they were:";
-        const char *separator = " ";
-        for (int i = 0; i < kVerdictCount; ++i) {
-          const auto v = static_cast<Verdict>(i);
-          if (!isLeft(v) || e.verdicts[i] == 0) continue;
-          s << separator << e.verdicts[i] << " " << describe(v);
-          separator = ", ";
-        }
-      }
-    }
-    if (e.flattenedVertices > 0)
-      s << "; " << e.flattenedVertices << " vertices flattened onto their planes";
+    detail::formatVerdictCounts(s, r.evidence);
+    if (r.evidence.flattenedVertices > 0)
+      s << "; " << r.evidence.flattenedVertices << " vertices flattened onto their planes";
     return s.str();
   }
   s << "new vertices: " << r.placement.moved() << " placed on sharp edges, "

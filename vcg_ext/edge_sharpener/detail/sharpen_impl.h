@@ -25,6 +25,7 @@
 #include "../subdivision.h"
 #include "../util/fast_topology.h"
 #include "../util/input_check.h"
+#include "../util/mesh_types.h"
 #include "../util/non_manifold.h"
 #include "../util/part_scales.h"
 
@@ -144,12 +145,16 @@ void updateOutputNormals(MeshType &m) {
     if (writable(m.vert[vi])) m.vert[vi].N().Normalize();
 }
 
-/// Colours (inspection only), the restored vertices (if asked for),
-/// compact vectors, normals, output counts.
+/// Colours (inspection only: by `faceVerdicts` where the auto method gives
+/// them and the verdict scheme is asked for, else the paper's labels), the
+/// restored vertices (if asked for), compact vectors, normals, output counts.
 template <class MeshType>
 void finish(MeshType &m, MeshLabels<MeshType> &labels, const SharpenOptions &opt,
-            SharpenReport &report) {
-  if (opt.colorize) colorize(m, labels);
+            SharpenReport &report, const FaceVerdicts *faceVerdicts = nullptr) {
+  if (opt.colorize && faceVerdicts && opt.colors == ColorScheme::Verdict)
+    paintVerdicts(m, *faceVerdicts);
+  else if (opt.colorize)
+    colorize(m, labels);
   recordRestoredVertices(m, labels);
   vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
   updateOutputNormals(m);
@@ -349,7 +354,93 @@ SharpenReport sharpenAuto(MeshType &m, const SharpenOptions &opt, const HeldFace
   report.evidenceGuard = true;
   report.evidence = autoMethod.stats();
   report.features = autoMethod.featureRecords();
-  finish(m, labels, opt, report);
+  const FaceVerdicts faceVerdicts =
+      opt.colorize ? autoMethod.outputFaceVerdicts(report.inputFaces) : FaceVerdicts{};
+  finish(m, labels, opt, report, &faceVerdicts);
+  return report;
+}
+
+}  // namespace detail
+
+namespace detail {
+
+/// The paper's and the extended method's Detect: their labels painted with
+/// the paper's palette; selected, the faces they may change (the paper's
+/// chamfer and corner triangles, the extended method's feature zones).
+template <class MeshType>
+SharpenReport detectByLabels(MeshType &m, const SharpenOptions &opt) {
+  return asPeopleHaveIt(m, opt, [&](const HeldFaces &held, SharpenReport report) {
+    MeshLabels<MeshType> labels(m);
+    std::vector<int> faceRegion;  // the zone methods': kZone on the faces they may change
+    if (opt.method == Method::Paper)
+      detectByFilters(m, labels, opt, report);
+    else
+      faceRegion = detectByZones(m, labels, opt, report).faceRegion;
+    holdFaces(m, labels, held, report.filters);
+    colorize(m, labels);
+    report.detectedFaces =
+        faceRegion.empty() ? selectChamferFaces(m, labels) : selectZoneFaces(m, faceRegion, held);
+    report.outputVertices = m.vert.size();
+    report.outputFaces = m.face.size();
+    reportProgress(opt, 100, "Edge-Sharpener: done");
+    return report;
+  });
+}
+
+/// The mesh layout the command-line tools use, in MeshType's scalar: the
+/// copy Detect runs the auto method on.
+template <class MeshType>
+using WorkMeshOf =
+    std::conditional_t<std::is_same_v<typename MeshType::ScalarType, double>, MeshD, Mesh>;
+
+/// A copy of m's positions and faces, in m's order. \pre m compact.
+template <class MeshType, class WorkMesh>
+void copyPositionsAndFaces(const MeshType &m, WorkMesh &work) {
+  using Coord = typename WorkMesh::CoordType;
+  vcg::tri::Allocator<WorkMesh>::AddVertices(work, m.vert.size());
+  for (std::size_t v = 0; v < m.vert.size(); ++v)
+    work.vert[v].P() = Coord::Construct(m.vert[v].cP());
+  vcg::tri::Allocator<WorkMesh>::AddFaces(work, m.face.size());
+  for (std::size_t f = 0; f < m.face.size(); ++f)
+    for (int j = 0; j < 3; ++j) work.face[f].V(j) = &work.vert[vcg::tri::Index(m, m.face[f].cV(j))];
+}
+
+/// The default's Detect: the auto method runs on a copy, and `m` shows what
+/// it did. Its faces are painted by verdict (or the paper's labels, as the
+/// extended method's Detect paints them), and selected where Sharpen
+/// changes them: the faces of the features it restores or finds already
+/// sharp (whose moves off the input it keeps), and every face of an input
+/// vertex it moves. So Sharpen with that selection does what Sharpen does
+/// without one, and deselecting a feature's faces leaves it as it came.
+template <class MeshType>
+SharpenReport detectByDefault(MeshType &m, const SharpenOptions &opt) {
+  using WorkCoord = typename WorkMeshOf<MeshType>::CoordType;
+  validate(m, opt);  // an InputError before anything is copied
+  WorkMeshOf<MeshType> work;
+  copyPositionsAndFaces(m, work);
+  SharpenOptions workOpt = opt;
+  workOpt.colorize = false;
+  SharpenReport report = sharpen(work, workOpt);
+  const FaceVerdicts verdicts = featureFaceVerdicts(report.features, m.face.size());
+  std::vector<char> moved(m.vert.size(), 0);
+  for (std::size_t v = 0; v < m.vert.size(); ++v)  // input vertices keep their index
+    moved[v] = work.vert[v].cP() != WorkCoord::Construct(m.vert[v].cP());
+  if (opt.colors == ColorScheme::Verdict)
+    paintVerdicts(m, verdicts);
+  else
+    detectByLabels(m, opt);  // paints the paper's labels; its selection is replaced below
+  report.detectedFaces = 0;
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    auto &face = m.face[f];
+    bool changed = verdicts[f] == std::int8_t(Verdict::Restored) ||
+                   verdicts[f] == std::int8_t(Verdict::AlreadySharp);
+    for (int j = 0; j < 3; ++j) changed = changed || moved[vcg::tri::Index(m, face.cV(j))];
+    changed ? face.SetS() : face.ClearS();
+    report.detectedFaces += changed;
+  }
+  report.geometryChanged = false;
+  report.outputVertices = m.vert.size();
+  report.outputFaces = m.face.size();
   return report;
 }
 
@@ -359,22 +450,8 @@ template <class MeshType>
 SharpenReport detectChamfers(MeshType &m, const SharpenOptions &options) {
   SharpenOptions opt = options;
   opt.selectedFacesOnly = false;  // detection looks at the whole mesh, and selects
-  return detail::asPeopleHaveIt(m, opt, [&](const HeldFaces &held, SharpenReport report) {
-    MeshLabels<MeshType> labels(m);
-    std::vector<int> faceRegion;  // the zone methods': kZone on the faces they may change
-    if (opt.method == Method::Paper)
-      detail::detectByFilters(m, labels, opt, report);
-    else
-      faceRegion = detail::detectByZones(m, labels, opt, report).faceRegion;
-    holdFaces(m, labels, held, report.filters);
-    colorize(m, labels);
-    report.detectedFaces =
-        faceRegion.empty() ? selectChamferFaces(m, labels) : selectZoneFaces(m, faceRegion, held);
-    report.outputVertices = m.vert.size();
-    report.outputFaces = m.face.size();
-    detail::reportProgress(opt, 100, "Edge-Sharpener: done");
-    return report;
-  });
+  if (opt.method == Method::Auto) return detail::detectByDefault(m, opt);
+  return detail::detectByLabels(m, opt);
 }
 
 template <class MeshType>

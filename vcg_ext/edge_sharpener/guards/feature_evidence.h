@@ -22,6 +22,7 @@
 #include <vcg/space/triangle3.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -841,16 +842,37 @@ class EvidenceGuard {
     for (std::size_t c = 0; c < features_.size(); ++c)
       if (!widths[c].empty()) out[c].widthSpacings = detail::medianOf(widths[c]);
     for (const SplitFace &face : plan.faces) {
-      if (face.centerVertex >= 0) {
-        out[featureOf_[face.centerVertex]].faces.push_back(face.face);
-        continue;
+      std::array<std::uint32_t, 4> splitBy{};
+      std::size_t n = 0;
+      for (const int k :
+           {face.edgeVertex[0], face.edgeVertex[1], face.edgeVertex[2], face.centerVertex})
+        if (k >= 0 &&
+            std::find(splitBy.begin(), splitBy.begin() + n, featureOf_[k]) == splitBy.begin() + n)
+          splitBy[n++] = featureOf_[k];
+      for (std::size_t i = 0; i < n; ++i) out[splitBy[i]].faces.push_back(face.face);
+    }
+    return out;
+  }
+
+  /// Per face of the mesh as it is now (before compaction), the verdict it
+  /// takes (verdictRank): that of the features of its inserted vertices;
+  /// else, for an input face given back whole, that of the features that
+  /// split it; else kNoVerdict.
+  FaceVerdicts outputFaceVerdicts(std::size_t inputFaceCount) const {
+    const FaceVerdicts input = featureFaceVerdicts(records(), inputFaceCount);
+    const std::size_t first = moves_.firstInserted(), count = moves_.plan().inserted.size();
+    FaceVerdicts out(m_.face.size(), kNoVerdict);
+    for (std::size_t f = 0; f < m_.face.size(); ++f) {
+      const auto &face = m_.face[f];
+      if (face.IsD()) continue;
+      for (int j = 0; j < 3; ++j) {
+        const std::size_t v = vcg::tri::Index(m_, face.cV(j));
+        if (v < first || v >= first + count) continue;
+        const std::uint32_t c = featureOf_[v - first];
+        out[f] = firstVerdict(out[f],
+                              std::int8_t(c < verdicts_.size() ? verdicts_[c] : Verdict::Restored));
       }
-      std::uint32_t last = UINT32_MAX;
-      for (const int k : face.edgeVertex)
-        if (k >= 0 && featureOf_[k] != last) {
-          out[featureOf_[k]].faces.push_back(face.face);
-          last = featureOf_[k];
-        }
+      if (out[f] == kNoVerdict && f < input.size()) out[f] = input[f];
     }
     return out;
   }
