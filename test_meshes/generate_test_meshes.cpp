@@ -1,12 +1,18 @@
 // generate-test-meshes OUTDIR [--cells 0.02,0.01] [--shapes cube,lblock] [--spots]
 //                      [--bevel-faces]
+// generate-test-meshes OUTDIR --designed-faces MESH --shapes NAME [--within D]
 // Writes <shape>_reference.ply (exact triangulation) and <shape>_mc<percent>.ply (marching
 // cubes with cells of <percent>% of the bounding-box diagonal) as binary PLY; with --spots
 // also <shape>_mc<percent>_spots.ply, the same with two non-manifold spots added
 // (non_manifold_spots.h): a vertex near a chamfer and an edge on one; with --bevel-faces,
 // for bevelled_block, <shape>_mc<percent>_bevel.txt, the indices of the faces on its wide
 // designed bevel (designed_faces.h), one per line: what a user deselects before sharpening.
+// With --designed-faces MESH (a sampling of the one shape --shapes names, in its frame, by any
+// tool) it writes only OUTDIR/<mesh>_designed.txt: the faces of MESH on any of the shape's
+// designed bevels and fillets, within D (default: MESH's median edge length, one sample
+// spacing) of them, with a comment line per designed feature (kind, size, width across).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +27,7 @@
 #include "test_meshes/shapes.h"
 // (keep after the mesh headers)
 #include <wrap/io_trimesh/export_ply.h>
+#include <wrap/io_trimesh/import.h>
 
 namespace {
 
@@ -44,6 +51,67 @@ void report(const std::filesystem::path &path, const Mesh &mesh, double seconds)
               seconds);
 }
 
+/// The faces of `mesh` on designed features of `shape` as a list: a comment
+/// line per feature, then one face index per line.
+bool writeDesignedFaces(const std::filesystem::path &path, const std::string &of, const Mesh &mesh,
+                        const std::string &shape, double within) {
+  const auto *prism = shapes::finishedPrism(shape);
+  if (prism == nullptr) {
+    std::fprintf(stderr, "generate-test-meshes: error: %s has no designed features\n",
+                 shape.c_str());
+    return false;
+  }
+  const std::vector<shapes::DesignedFinish> finishes = shapes::designedFinishes(*prism);
+  std::ofstream list(path);
+  list << "# faces of " << of << " within " << within << " of a designed feature of " << shape
+       << " (test_meshes/designed_faces.h)\n";
+  for (const shapes::DesignedFinish &finish : finishes)
+    list << "# " << finish.kindName() << " " << finish.size << ": " << finish.width() << " wide\n";
+  const std::vector<char> on = shapes::designedFaces(mesh, *prism, finishes, within);
+  for (std::size_t f = 0; f < on.size(); ++f)
+    if (on[f]) list << f << "\n";
+  if (!list.flush()) {
+    std::fprintf(stderr, "generate-test-meshes: error: cannot write %s\n", path.c_str());
+    return false;
+  }
+  std::printf("%s %zu faces\n", path.string().c_str(),
+              std::size_t(std::count(on.begin(), on.end(), 1)));
+  return true;
+}
+
+double medianEdgeLength(const Mesh &mesh) {
+  std::vector<double> lengths;
+  for (const auto &f : mesh.face)
+    for (int i = 0; i < 3; ++i) lengths.push_back(vcg::Distance(f.cP(i), f.cP((i + 1) % 3)));
+  if (lengths.empty()) return 0;
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+/// --designed-faces: reads the mesh, writes its list.
+int designedFacesOf(const std::string &meshPath, const std::vector<std::string> &shapeNames,
+                    const std::string &outputDir, double within) {
+  if (shapeNames.size() != 1) {
+    std::fprintf(stderr, "generate-test-meshes: error: --designed-faces needs one --shapes\n");
+    return 1;
+  }
+  Mesh mesh;
+  int loadMask = 0;
+  if (vcg::tri::io::Importer<Mesh>::Open(mesh, meshPath.c_str(), loadMask) != 0 || mesh.fn == 0) {
+    std::fprintf(stderr, "generate-test-meshes: error: cannot read a mesh from %s\n",
+                 meshPath.c_str());
+    return 1;
+  }
+  std::filesystem::create_directories(outputDir);
+  const std::filesystem::path in(meshPath);
+  const std::filesystem::path out =
+      std::filesystem::path(outputDir) / (in.stem().string() + "_designed.txt");
+  return writeDesignedFaces(out, in.filename().string(), mesh, shapeNames[0],
+                            within > 0 ? within : medianEdgeLength(mesh))
+             ? 0
+             : 1;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -65,7 +133,18 @@ int main(int argc, char **argv) {
   app.add_flag("--bevel-faces", bevelFaces,
                "For bevelled_block, also write the indices of the faces on its wide designed "
                "bevel (<name>_bevel.txt)");
+  std::string designedFacesMesh;
+  app.add_option("--designed-faces", designedFacesMesh,
+                 "Write only OUTDIR/<mesh>_designed.txt: the faces of this mesh (a sampling of "
+                 "the one shape --shapes names) on the shape's designed bevels and fillets");
+  double within = 0;
+  app.add_option("--within", within,
+                 "--designed-faces: how near a face's centroid lies to a designed feature "
+                 "(default: the mesh's median edge length)")
+      ->check(CLI::NonNegativeNumber);
   CLI11_PARSE(app, argc, argv);
+  if (!designedFacesMesh.empty())
+    return designedFacesOf(designedFacesMesh, shapeNames, outputDir, within);
 
   try {
     std::filesystem::create_directories(outputDir);
@@ -95,8 +174,10 @@ int main(int argc, char **argv) {
           std::ofstream list(listPath);
           list << "# faces of " << mcPath.filename().string()
                << " on the designed bevel 0.07 wide (test_meshes/designed_faces.h)\n";
-          const std::vector<char> on = shapes::bevelledBlockBevelFaces(
-              mesh, shapes::cellSizeForDiagonalFraction(shape, fraction), shapes::kWideBevel);
+          const auto &prism = *shapes::finishedPrism(name);
+          const std::vector<char> on = shapes::designedFaces(
+              mesh, prism, {shapes::designedFinishes(prism)[shapes::kWideBevel]},
+              shapes::cellSizeForDiagonalFraction(shape, fraction));
           for (std::size_t f = 0; f < on.size(); ++f)
             if (on[f]) list << f << "\n";
           if (!list.flush()) throw std::runtime_error("cannot write " + listPath.string());

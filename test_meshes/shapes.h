@@ -391,11 +391,13 @@ struct CornerFinish {
   double size = 0;
 };
 
-/// A convex polygon (counter-clockwise) with each corner finished as `finish` says.
-inline std::vector<Point2d> finishedOutline(const std::vector<Point2d>& corners,
-                                            const std::vector<CornerFinish>& finish) {
+/// The outline points of each corner of a convex polygon (counter-clockwise) finished as
+/// `finish` says: a sharp corner's one point, a bevel's two ends, a fillet's 17 arc points
+/// (16 facets), from the side before the corner to the side after it.
+inline std::vector<std::vector<Point2d>> finishedCorners(const std::vector<Point2d>& corners,
+                                                         const std::vector<CornerFinish>& finish) {
   constexpr int kFilletFacets = 16;
-  std::vector<Point2d> outline;
+  std::vector<std::vector<Point2d>> out;
   const std::size_t n = corners.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Point2d& p = corners[i];
@@ -404,12 +406,13 @@ inline std::vector<Point2d> finishedOutline(const std::vector<Point2d>& corners,
     toNext /= toNext.Norm();
     const double interior = std::acos(std::clamp(dot2(toPrev, toNext), -1.0, 1.0));
     const CornerFinish& f = finish[i];
+    std::vector<Point2d>& points = out.emplace_back();
     if (f.kind == CornerFinish::Sharp) {
-      outline.push_back(p);
+      points.push_back(p);
     } else if (f.kind == CornerFinish::Bevel) {
       const double cut = f.size / (2 * std::sin(interior / 2));  // along each side
-      outline.push_back(p + toPrev * cut);
-      outline.push_back(p + toNext * cut);
+      points.push_back(p + toPrev * cut);
+      points.push_back(p + toNext * cut);
     } else {
       const double tangent = f.size / std::tan(interior / 2);
       Point2d bisector = toPrev + toNext;
@@ -421,46 +424,78 @@ inline std::vector<Point2d> finishedOutline(const std::vector<Point2d>& corners,
       while (sweep < 0) sweep += 2 * M_PI;  // counter-clockwise, the short way round
       for (int k = 0; k <= kFilletFacets; ++k) {
         const double a = a0 + sweep * k / kFilletFacets;
-        outline.push_back(centre + Point2d(std::cos(a), std::sin(a)) * f.size);
+        points.push_back(centre + Point2d(std::cos(a), std::sin(a)) * f.size);
       }
     }
   }
+  return out;
+}
+
+/// A convex polygon (counter-clockwise) with each corner finished as `finish` says.
+inline std::vector<Point2d> finishedOutline(const std::vector<Point2d>& corners,
+                                            const std::vector<CornerFinish>& finish) {
+  std::vector<Point2d> outline;
+  for (const std::vector<Point2d>& points : finishedCorners(corners, finish))
+    outline.insert(outline.end(), points.begin(), points.end());
   return outline;
 }
 
+/// A prism whose outline's corners are finished (the shapes bevelled_block and
+/// finished_hexprism): its outline, height and the turn that makes it oblique to the grid.
+/// What it is made from is what its designed features are (designed_faces.h).
+struct FinishedPrism {
+  std::string name, description;
+  std::vector<Point2d> corners;  ///< counter-clockwise
+  std::vector<CornerFinish> finish;
+  double zMin = 0, zMax = 0;
+  Point3d axis;  ///< the shape is the prism turned by `angle` (radians) about `axis`
+  double angle = 0;
+};
+
 /// Box 1.6 x 1.0 x 0.6 whose vertical edges are two bevels (0.03 and 0.07 wide) and two
 /// fillets (radii 0.03 and 0.07): one to three and a half cells at 1% of the diagonal.
-inline Shape bevelledBlock() {
-  return prismShape("bevelled_block",
-                    "box 1.6 x 1.0 x 0.6, vertical edges finished by designed bevels 0.03 and "
-                    "0.07 wide and fillets of radii 0.03 and 0.07; sharp edges round the caps",
-                    finishedOutline({{-0.8, -0.5}, {0.8, -0.5}, {0.8, 0.5}, {-0.8, 0.5}},
-                                    {{CornerFinish::Bevel, 0.03},
-                                     {CornerFinish::Fillet, 0.03},
-                                     {CornerFinish::Bevel, 0.07},
-                                     {CornerFinish::Fillet, 0.07}}),
-                    Point2d(0, 0), -0.3, 0.3);
+inline const FinishedPrism& bevelledBlockPrism() {
+  static const FinishedPrism prism{
+      "bevelled_block",
+      "box 1.6 x 1.0 x 0.6, vertical edges finished by designed bevels 0.03 and 0.07 wide and "
+      "fillets of radii 0.03 and 0.07; sharp edges round the caps",
+      {{-0.8, -0.5}, {0.8, -0.5}, {0.8, 0.5}, {-0.8, 0.5}},
+      {{CornerFinish::Bevel, 0.03},
+       {CornerFinish::Fillet, 0.03},
+       {CornerFinish::Bevel, 0.07},
+       {CornerFinish::Fillet, 0.07}},
+      -0.3,
+      0.3,
+      Point3d(3, 1, 2),
+      0.5};
+  return prism;
 }
 
 /// A hexagonal prism whose corners are finished by bevels and fillets of other sizes,
 /// one left sharp, and whose sides meet at other angles than bevelledBlock's.
-inline Shape finishedHexPrism() {
-  return prismShape("finished_hexprism",
-                    "hexagonal prism 1.75 x 1.35 x 0.7, vertical edges finished by designed "
-                    "bevels (0.05, 0.1 wide) and fillets (radii 0.02, 0.05, 0.1), one sharp",
-                    finishedOutline({{-0.85, -0.35},
-                                     {-0.2, -0.7},
-                                     {0.7, -0.55},
-                                     {0.9, 0.1},
-                                     {0.35, 0.65},
-                                     {-0.6, 0.5}},
-                                    {{CornerFinish::Fillet, 0.05},
-                                     {CornerFinish::Bevel, 0.05},
-                                     {CornerFinish::Sharp, 0},
-                                     {CornerFinish::Fillet, 0.1},
-                                     {CornerFinish::Bevel, 0.1},
-                                     {CornerFinish::Fillet, 0.02}}),
-                    Point2d(0, 0), -0.35, 0.35);
+inline const FinishedPrism& finishedHexPrismPrism() {
+  static const FinishedPrism prism{
+      "finished_hexprism",
+      "hexagonal prism 1.75 x 1.35 x 0.7, vertical edges finished by designed bevels (0.05, "
+      "0.1 wide) and fillets (radii 0.02, 0.05, 0.1), one sharp",
+      {{-0.85, -0.35}, {-0.2, -0.7}, {0.7, -0.55}, {0.9, 0.1}, {0.35, 0.65}, {-0.6, 0.5}},
+      {{CornerFinish::Fillet, 0.05},
+       {CornerFinish::Bevel, 0.05},
+       {CornerFinish::Sharp, 0},
+       {CornerFinish::Fillet, 0.1},
+       {CornerFinish::Bevel, 0.1},
+       {CornerFinish::Fillet, 0.02}},
+      -0.35,
+      0.35,
+      Point3d(-1, 2, 2),
+      0.7};
+  return prism;
+}
+
+/// The finished prism, unturned.
+inline Shape finishedPrismShape(const FinishedPrism& p) {
+  return prismShape(p.name, p.description, finishedOutline(p.corners, p.finish), Point2d(0, 0),
+                    p.zMin, p.zMax);
 }
 
 inline TriangleList uvSphere(double radius, int rings, int segments) {
@@ -551,9 +586,6 @@ inline Shape rotated(const Shape& shape, const Point3d& axis, double angleRadian
   return result;
 }
 
-/// bevelled_block is bevelledBlock() turned by this angle (radians) about this axis.
-inline const Point3d kBevelledBlockAxis(3, 1, 2);
-constexpr double kBevelledBlockAngle = 0.5;
 
 /// All shapes, built once.
 inline const std::vector<Shape>& allShapes() {
@@ -564,10 +596,9 @@ inline const std::vector<Shape>& allShapes() {
     // The L-block tilted so that no face, edge or corner is aligned with the grid.
     list.push_back(rotated(list[1], Point3d(1, 2, 3), 0.6, "lblock_tilted"));
     // Designed bevels and fillets beside sharp edges, oblique to the grid.
-    list.push_back(rotated(detail::bevelledBlock(), kBevelledBlockAxis, kBevelledBlockAngle,
-                           "bevelled_block"));
-    list.push_back(
-        rotated(detail::finishedHexPrism(), Point3d(-1, 2, 2), 0.7, "finished_hexprism"));
+    for (const detail::FinishedPrism* p :
+         {&detail::bevelledBlockPrism(), &detail::finishedHexPrismPrism()})
+      list.push_back(rotated(detail::finishedPrismShape(*p), p->axis, p->angle, p->name));
     return list;
   }();
   return shapes;

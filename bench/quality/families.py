@@ -370,6 +370,67 @@ def default_misses(cases, mult):
     return L
 
 
+# Issue 61, point 4: a designed bevel, fillet or narrow face up to this many sample spacings
+# wide can give the very mesh a sampler gives a sharp edge (bench/study/bevel_ambiguity.py):
+# no rule on the mesh alone tells them apart, the user's selection does.
+AMBIGUOUS_SPACINGS = 1.5
+SELECTION_VARIANT = "auto-selection"  # run.py: the default with the designed faces left out
+
+
+def narrowest_designed(case, mult):
+    """The case's narrowest designed feature (run.py: case["designed"]) in its own sample
+    spacings (the default's run), or None when it has none known or no spacing was
+    reported."""
+    features = case.get("designed") or []
+    r = _run(case, DEFAULT_METHOD, mult)
+    if not features or r is None or not r.get("sample_spacing"):
+        return None
+    return min(f["width"] for f in features) / r["sample_spacing"]
+
+
+def _worse_of(cases, method, mult):
+    """The cases whose run of `method` came out worse, and the count measured."""
+    worse, measured = [], 0
+    for c in cases:
+        r = _run(c, method, mult)
+        if r is None or r["status"] != "ok":
+            continue
+        measured += 1
+        if is_worse(c["before"], r["after"]):
+            worse.append(c)
+    return worse, measured
+
+
+def no_harm_table(cases, mult):
+    """Issue 61's worse count in two parts, per family: inputs whose designed features are all
+    wider than AMBIGUOUS_SPACINGS (or that have none), and inputs with one within it (each
+    worse one listed with its width); then the default with the user's selection."""
+    rows = [f"| family | designed features all wider than {AMBIGUOUS_SPACINGS:g} spacings "
+            f"(target 0) | one within {AMBIGUOUS_SPACINGS:g} spacings: worse, and their widths "
+            "| with the user's selection (designed faces left out; target 0) |",
+            "|---|---|---|---|"]
+    totals = [0, 0, 0, 0, 0, 0]
+    for kind, cs in _families(cases):
+        clear = [c for c in cs if (narrowest_designed(c, mult) or math.inf) > AMBIGUOUS_SPACINGS]
+        within = [c for c in cs if c not in clear]
+        wa, ma = _worse_of(clear, DEFAULT_METHOD, mult)
+        wb, mb = _worse_of(within, DEFAULT_METHOD, mult)
+        ws, ms = _worse_of(cs, SELECTION_VARIANT, mult)
+        listed = ", ".join(f"{c['model']} {c['resolution']} "
+                           f"({narrowest_designed(c, mult):.2f} spacings)" for c in wb)
+        rows.append(f"| {FAMILY_TITLES.get(kind, kind)} | {len(wa)}/{ma} ({_mark(not wa)})"
+                    + "".join(f": {c['model']} {c['resolution']}" for c in wa[:1])
+                    + "".join(f", {c['model']} {c['resolution']}" for c in wa[1:])
+                    + f" | {len(wb)}/{mb}" + (f": {listed}" if listed else "")
+                    + f" | {f'{len(ws)}/{ms} ({_mark(not ws)})' if ms else '–'} |")
+        for i, n in enumerate((len(wa), ma, len(wb), mb, len(ws), ms)):
+            totals[i] += n
+    rows.append(f"| all | {totals[0]}/{totals[1]} ({_mark(totals[0] == 0)}) | "
+                f"{totals[2]}/{totals[3]} | {totals[4]}/{totals[5]} "
+                f"({_mark(totals[4] == 0)}) |")
+    return "\n".join(rows)
+
+
 def default_section(results):
     """Issue 20: the default method against its targets, per half (a list of lines)."""
     mult = results["default_multiplier"]
@@ -389,6 +450,16 @@ def default_section(results):
               f"Outputs of the default method that came out worse ({half} half):", "",
               default_worse_list(sorted(hc, key=lambda c: (c["input"], c["order"], c["model"])),
                                  mult), "",
+              f"No harm as it can be met (issue 61, {half} half): the worse count of the default "
+              "in two parts, by the input's narrowest designed feature (a bevel, fillet or narrow "
+              "face the part was designed with: test_meshes/designed_faces.h for the generated "
+              "shapes, bench/quality/designed.json for the others) in the input's own sample "
+              f"spacings: all wider than {AMBIGUOUS_SPACINGS:g} (or none), where a worse output is "
+              "harm the default must not do; and one within it, where the mesh alone cannot "
+              "tell the feature from a sampling chamfer. Then the default with the user's "
+              "selection: the generated shapes' designed faces (those within one sample spacing "
+              "of a designed feature) left out with `--skip-faces`.", "",
+              no_harm_table(hc, mult), "",
               f"Where the default misses a gain target ({half} half), input by input: what the "
               "default did (its report) and the input's max error in its own sample spacings "
               "(the sharpener's median edge length). Deeper than "

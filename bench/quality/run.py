@@ -53,6 +53,13 @@ METHODS = ("paper", "extended", "auto")
 VARIANTS = {"paper": ["--method", "paper"], "extended": ["--method", "extended"],
             "auto": ["--method", "auto"]}
 SWEPT_VARIANTS = METHODS
+# Issue 61: the default with the user's selection, where the designed bevels and fillets of a
+# generated shape are known exactly (test_meshes/designed_faces.h): their faces are left out
+# with --skip-faces, as a user who knows the part deselects them.
+SELECTION_VARIANT = "auto-selection"
+DESIGNED_SHAPES = ("bevelled_block", "finished_hexprism")
+# The designed features of the other references (bench/quality/designed.json).
+DESIGNED_FILE = os.path.join(HERE, "designed.json")
 DEFAULT_MULTIPLIER = 2.0
 SWEEP = (1.5, 2.0, 2.5, 3.0)
 GENERATED_SHAPES = ("cube", "lblock", "lblock_tilted", "wedge", "pyramid", "cross_prism",
@@ -531,11 +538,48 @@ def measure_peer(tools, model, in_path, peer, timeout):
     return row
 
 
-def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cache, timeout):
+def designed_mask(tools, model, in_path, cache, timeout):
+    """For a generated shape with designed features: the faces of its input on them (a list
+    file, made by generate-test-meshes --designed-faces, one sample spacing wide) and the
+    features (kind, width across); (None, []) for the other shapes."""
+    if model.group != "generated" or model.name not in DESIGNED_SHAPES:
+        return None, []
+    masks = os.path.join(cache, "masks")
+    os.makedirs(masks, exist_ok=True)
+    stem = os.path.splitext(os.path.basename(in_path))[0]
+    path = os.path.join(masks, stem + "_designed.txt")
+    subprocess.run([tools.generator, masks, "--designed-faces", in_path, "--shapes", model.name],
+                   check=True, stdout=subprocess.DEVNULL, timeout=timeout)
+    features = []
+    with open(path) as f:
+        for line in f:
+            words = line.split()  # "# bevel 0.05: 0.05 wide"
+            if len(words) == 5 and words[0] == "#" and words[4] == "wide":
+                features.append({"kind": words[1], "size": float(words[2].rstrip(":")),
+                                 "width": float(words[3])})
+    return path, features
+
+
+_designed = None
+
+
+def designed_features(model):
+    """The designed features of a reference that is not a generated shape (designed.json)."""
+    global _designed
+    if _designed is None:
+        with open(DESIGNED_FILE) as f:
+            _designed = json.load(f)["references"]
+    return _designed.get(model.name, {}).get("features", [])
+
+
+def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cache, timeout,
+                        mask=None):
     key = f"{model.name}__{spec.key}__{method}_m{mult:g}"
     out = os.path.join(cache, "outputs", key + ".ply")
     row = {"method": method, "multiplier": mult}
-    cmd = [tools.cli, in_path, out, *VARIANTS[method], "--multiplier", str(mult), "--json", "-q"]
+    variant = (["--method", "auto", "--skip-faces", mask] if method == SELECTION_VARIANT
+               else VARIANTS[method])
+    cmd = [tools.cli, in_path, out, *variant, "--multiplier", str(mult), "--json", "-q"]
     rep, wall, err = run_json(cmd, timeout)
     if rep is None:
         row.update(status="sharpen failed", why=err)
@@ -587,6 +631,12 @@ def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout, pee
         for mult in multipliers if method in SWEPT_VARIANTS else [DEFAULT_MULTIPLIER]:
             case["runs"].append(sharpen_and_measure(tools, model, spec, in_path, d, method, mult,
                                                     cache, timeout))
+    mask, case["designed"] = designed_mask(tools, model, in_path, cache, timeout)
+    if mask is None:
+        case["designed"] = designed_features(model)
+    elif "auto" in VARIANTS:
+        case["runs"].append(sharpen_and_measure(tools, model, spec, in_path, d, SELECTION_VARIANT,
+                                                DEFAULT_MULTIPLIER, cache, timeout, mask))
     if peer is not None:
         case["runs"].append(measure_peer(tools, model, in_path, peer(), timeout))
     return case

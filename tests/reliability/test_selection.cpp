@@ -44,10 +44,10 @@ const es::Mesh &bevelledBlock() {
   return *mesh;
 }
 
-/// A designed bevel of bevelled_block, named.
+/// A designed bevel of bevelled_block, named (an index into its designedFinishes()).
 struct Bevel {
   const char *name;
-  shapes::BlockBevel bevel;
+  std::size_t finish;
 };
 
 void PrintTo(const Bevel &bevel, std::ostream *os) {
@@ -56,8 +56,9 @@ void PrintTo(const Bevel &bevel, std::ostream *os) {
 
 std::vector<char> bevelFaces(const es::Mesh &m, const Bevel &bevel) {
   const shapes::Shape &shape = shapes::shapeByName("bevelled_block");
-  return shapes::bevelledBlockBevelFaces(m, shapes::cellSizeForDiagonalFraction(shape, 0.01),
-                                         bevel.bevel);
+  const auto &prism = *shapes::finishedPrism("bevelled_block");
+  return shapes::designedFaces(m, prism, {shapes::designedFinishes(prism)[bevel.finish]},
+                               shapes::cellSizeForDiagonalFraction(shape, 0.01));
 }
 
 es::SharpenReport sharpenSelected(const es::Mesh &input, es::Mesh &out,
