@@ -299,6 +299,32 @@ TEST(Detect, ItsSelectionIsWhatSharpenChanges) {
     ASSERT_EQ(viaDetect.vert[v].cP(), whole.vert[v].cP()) << "vertex " << v;
 }
 
+// A selection with no feature in it: the faces Detect leaves unselected,
+// those Sharpen does not change. The mesh comes back as it came, and the
+// report says every feature was left for the selection.
+TEST(Detect, ItsComplementChangesNothing) {
+  const es::Mesh &input = bevelledBlock();
+  es::Mesh detected;
+  copy(detected, input);
+  es::detectChamfers(detected);
+  std::vector<char> complement(input.face.size());
+  for (std::size_t f = 0; f < complement.size(); ++f) complement[f] = !detected.face[f].IsS();
+  es::Mesh out;
+  const es::SharpenReport r = sharpenSelected(input, out, complement);
+  EXPECT_EQ(r.evidence.count(es::Verdict::Restored), 0u);
+  EXPECT_GT(r.evidence.count(es::Verdict::OutsideSelection), 0u);
+  EXPECT_NE(es::formatVerdictSummary(r).find("outside the selection"), std::string::npos)
+      << es::formatVerdictSummary(r);
+  ASSERT_EQ(out.vert.size(), input.vert.size());
+  ASSERT_EQ(out.face.size(), input.face.size());
+  for (std::size_t v = 0; v < input.vert.size(); ++v)
+    ASSERT_EQ(out.vert[v].cP(), input.vert[v].cP());
+  for (std::size_t f = 0; f < input.face.size(); ++f)
+    for (int i = 0; i < 3; ++i)
+      ASSERT_EQ(vcg::tri::Index(out, out.face[f].cV(i)),
+                vcg::tri::Index(input, input.face[f].cV(i)));
+}
+
 // The verdict colours: one per verdict and one for no feature, all distinct,
 // so the legend reads each; where a face belongs to several features, a
 // restored one wins.
