@@ -28,8 +28,7 @@ struct DesignedFinish {
 
 /// The finished prism the shape `name` is made from; null for the other shapes.
 inline const detail::FinishedPrism *finishedPrism(const std::string &name) {
-  for (const detail::FinishedPrism *p :
-       {&detail::bevelledBlockPrism(), &detail::finishedHexPrismPrism()})
+  for (const detail::FinishedPrism *p : detail::finishedPrisms())
     if (p->name == name) return p;
   return nullptr;
 }

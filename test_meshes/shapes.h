@@ -492,6 +492,11 @@ inline const FinishedPrism& finishedHexPrismPrism() {
   return prism;
 }
 
+/// Every finished prism among the shapes.
+inline std::vector<const FinishedPrism*> finishedPrisms() {
+  return {&bevelledBlockPrism(), &finishedHexPrismPrism()};
+}
+
 /// The finished prism, unturned.
 inline Shape finishedPrismShape(const FinishedPrism& p) {
   return prismShape(p.name, p.description, finishedOutline(p.corners, p.finish), Point2d(0, 0),
@@ -596,8 +601,7 @@ inline const std::vector<Shape>& allShapes() {
     // The L-block tilted so that no face, edge or corner is aligned with the grid.
     list.push_back(rotated(list[1], Point3d(1, 2, 3), 0.6, "lblock_tilted"));
     // Designed bevels and fillets beside sharp edges, oblique to the grid.
-    for (const detail::FinishedPrism* p :
-         {&detail::bevelledBlockPrism(), &detail::finishedHexPrismPrism()})
+    for (const detail::FinishedPrism* p : detail::finishedPrisms())
       list.push_back(rotated(detail::finishedPrismShape(*p), p->axis, p->angle, p->name));
     return list;
   }();

@@ -411,16 +411,17 @@ def no_harm_table(cases, mult):
             "|---|---|---|---|"]
     totals = [0, 0, 0, 0, 0, 0]
     for kind, cs in _families(cases):
-        clear = [c for c in cs if (narrowest_designed(c, mult) or math.inf) > AMBIGUOUS_SPACINGS]
-        within = [c for c in cs if c not in clear]
+        narrowest = [narrowest_designed(c, mult) for c in cs]
+        clear = [c for c, n in zip(cs, narrowest) if n is None or n > AMBIGUOUS_SPACINGS]
+        within = {id(c): n for c, n in zip(cs, narrowest) if c not in clear}
         wa, ma = _worse_of(clear, DEFAULT_METHOD, mult)
-        wb, mb = _worse_of(within, DEFAULT_METHOD, mult)
+        wb, mb = _worse_of([c for c in cs if id(c) in within], DEFAULT_METHOD, mult)
         ws, ms = _worse_of(cs, SELECTION_VARIANT, mult)
-        listed = ", ".join(f"{c['model']} {c['resolution']} "
-                           f"({narrowest_designed(c, mult):.2f} spacings)" for c in wb)
+        harmed = ", ".join(f"{c['model']} {c['resolution']}" for c in wa)
+        listed = ", ".join(f"{c['model']} {c['resolution']} ({within[id(c)]:.2f} spacings)"
+                           for c in wb)
         rows.append(f"| {FAMILY_TITLES.get(kind, kind)} | {len(wa)}/{ma} ({_mark(not wa)})"
-                    + "".join(f": {c['model']} {c['resolution']}" for c in wa[:1])
-                    + "".join(f", {c['model']} {c['resolution']}" for c in wa[1:])
+                    + (f": {harmed}" if harmed else "")
                     + f" | {len(wb)}/{mb}" + (f": {listed}" if listed else "")
                     + f" | {f'{len(ws)}/{ms} ({_mark(not ws)})' if ms else '–'} |")
         for i, n in enumerate((len(wa), ma, len(wb), mb, len(ws), ms)):

@@ -21,11 +21,14 @@
 #include "edge_sharpener/util/mesh_types.h"
 #include "mesh_distance.h"
 #include "reliability/invariants.h"
+#include "same_mesh.h"
 #include "test_meshes/designed_faces.h"
 #include "test_meshes/shapes.h"
 
 namespace es = edge_sharpener;
 namespace shapes = edge_sharpener::test_meshes;
+using edge_sharpener::testing::sameMesh;
+using edge_sharpener::testing::samePositions;
 
 namespace {
 
@@ -190,9 +193,7 @@ TEST_P(SelectionWithoutABevel, DetectThenDeselectGivesTheSame) {
   const es::SharpenReport rd = sharpenSelected(input, viaDetect, detectedButBevel);
   const es::SharpenReport ra = sharpenSelected(input, viaAll, allButBevel);
   EXPECT_EQ(rd.evidence.count(es::Verdict::Restored), ra.evidence.count(es::Verdict::Restored));
-  ASSERT_EQ(viaDetect.vert.size(), viaAll.vert.size());
-  for (std::size_t v = 0; v < viaAll.vert.size(); ++v)
-    ASSERT_EQ(viaDetect.vert[v].cP(), viaAll.vert[v].cP()) << "vertex " << v;
+  ASSERT_TRUE(samePositions(viaDetect, viaAll));
 }
 
 INSTANTIATE_TEST_SUITE_P(BevelledBlock, SelectionWithoutABevel,
@@ -207,14 +208,7 @@ TEST(Selection, NoFaceSelectedLeavesTheMesh) {
   es::Mesh out;
   const es::SharpenReport r = sharpenSelected(input, out, std::vector<char>(input.face.size(), 0));
   EXPECT_EQ(r.selectedFaces, 0u);
-  ASSERT_EQ(out.vert.size(), input.vert.size());
-  ASSERT_EQ(out.face.size(), input.face.size());
-  for (std::size_t v = 0; v < input.vert.size(); ++v)
-    ASSERT_EQ(out.vert[v].cP(), input.vert[v].cP());
-  for (std::size_t f = 0; f < input.face.size(); ++f)
-    for (int i = 0; i < 3; ++i)
-      ASSERT_EQ(vcg::tri::Index(out, out.face[f].cV(i)),
-                vcg::tri::Index(input, input.face[f].cV(i)));
+  ASSERT_TRUE(sameMesh(out, input));
   EXPECT_NE(es::formatVerdictSummary(r).find("nothing selected"), std::string::npos);
 }
 
@@ -229,10 +223,8 @@ TEST(Selection, EveryFaceSelectedIsTheWholeRun) {
     opt.method = method;
     es::sharpen(whole, opt);
     sharpenSelected(input, all, std::vector<char>(input.face.size(), 1), method);
-    ASSERT_EQ(all.vert.size(), whole.vert.size());
+    ASSERT_TRUE(samePositions(all, whole));
     ASSERT_EQ(all.face.size(), whole.face.size());
-    for (std::size_t v = 0; v < whole.vert.size(); ++v)
-      ASSERT_EQ(all.vert[v].cP(), whole.vert[v].cP()) << "vertex " << v;
   }
 }
 
@@ -293,10 +285,8 @@ TEST(Detect, ItsSelectionIsWhatSharpenChanges) {
             std::string::npos);
   es::Mesh viaDetect;
   sharpenSelected(input, viaDetect, selected);
-  ASSERT_EQ(viaDetect.vert.size(), whole.vert.size());
+  ASSERT_TRUE(samePositions(viaDetect, whole));
   ASSERT_EQ(viaDetect.face.size(), whole.face.size());
-  for (std::size_t v = 0; v < whole.vert.size(); ++v)
-    ASSERT_EQ(viaDetect.vert[v].cP(), whole.vert[v].cP()) << "vertex " << v;
 }
 
 // A selection with no feature in it: the faces Detect leaves unselected,
@@ -315,14 +305,7 @@ TEST(Detect, ItsComplementChangesNothing) {
   EXPECT_GT(r.evidence.count(es::Verdict::OutsideSelection), 0u);
   EXPECT_NE(es::formatVerdictSummary(r).find("outside the selection"), std::string::npos)
       << es::formatVerdictSummary(r);
-  ASSERT_EQ(out.vert.size(), input.vert.size());
-  ASSERT_EQ(out.face.size(), input.face.size());
-  for (std::size_t v = 0; v < input.vert.size(); ++v)
-    ASSERT_EQ(out.vert[v].cP(), input.vert[v].cP());
-  for (std::size_t f = 0; f < input.face.size(); ++f)
-    for (int i = 0; i < 3; ++i)
-      ASSERT_EQ(vcg::tri::Index(out, out.face[f].cV(i)),
-                vcg::tri::Index(input, input.face[f].cV(i)));
+  ASSERT_TRUE(sameMesh(out, input));
 }
 
 // The verdict colours: one per verdict and one for no feature, all distinct,
@@ -372,9 +355,7 @@ TEST(VerdictColors, PaintWhatTheRunDid) {
   auto restoredAttr = vcg::tri::Allocator<es::Mesh>::AddPerVertexAttribute<std::uint8_t>(
       painted, es::kRestoredVertexAttribute);
   es::sharpen(painted, opt);
-  ASSERT_EQ(painted.vert.size(), plain.vert.size());
-  for (std::size_t v = 0; v < plain.vert.size(); ++v)
-    ASSERT_EQ(painted.vert[v].cP(), plain.vert[v].cP());
+  ASSERT_TRUE(samePositions(painted, plain));
   const vcg::Color4b green = es::verdictColor(es::Verdict::Restored);
   const vcg::Color4b blue = es::verdictColor(es::Verdict::AlreadySharp);
   std::size_t onRestored = 0;

@@ -150,9 +150,11 @@ class AutoMethod {
   const EvidenceStats &stats() const { return stats_; }
 
   /// Per face of the mesh as it is now, the verdict its colour shows
-  /// (EvidenceGuard::outputFaceVerdicts; all kNoVerdict before judgeFeatures()).
-  FaceVerdicts outputFaceVerdicts(std::size_t inputFaceCount) const {
-    return guard_ ? guard_->outputFaceVerdicts(inputFaceCount)
+  /// (EvidenceGuard::outputFaceVerdicts, from featureRecords(); all
+  /// kNoVerdict before judgeFeatures()).
+  FaceVerdicts outputFaceVerdicts(const std::vector<FeatureRecord> &features,
+                                  std::size_t inputFaceCount) const {
+    return guard_ ? guard_->outputFaceVerdicts(features, inputFaceCount)
                   : FaceVerdicts(m_.face.size(), kNoVerdict);
   }
 

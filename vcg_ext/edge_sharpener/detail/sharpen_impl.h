@@ -355,7 +355,8 @@ SharpenReport sharpenAuto(MeshType &m, const SharpenOptions &opt, const HeldFace
   report.evidence = autoMethod.stats();
   report.features = autoMethod.featureRecords();
   const FaceVerdicts faceVerdicts =
-      opt.colorize ? autoMethod.outputFaceVerdicts(report.inputFaces) : FaceVerdicts{};
+      opt.colorize ? autoMethod.outputFaceVerdicts(report.features, report.inputFaces)
+                   : FaceVerdicts{};
   finish(m, labels, opt, report, &faceVerdicts);
   return report;
 }

@@ -857,9 +857,10 @@ class EvidenceGuard {
   /// Per face of the mesh as it is now (before compaction), the verdict it
   /// takes (verdictRank): that of the features of its inserted vertices;
   /// else, for an input face given back whole, that of the features that
-  /// split it; else kNoVerdict.
-  FaceVerdicts outputFaceVerdicts(std::size_t inputFaceCount) const {
-    const FaceVerdicts input = featureFaceVerdicts(records(), inputFaceCount);
+  /// split it; else kNoVerdict. \pre `features` is records(), by feature index.
+  FaceVerdicts outputFaceVerdicts(const std::vector<FeatureRecord> &features,
+                                  std::size_t inputFaceCount) const {
+    const FaceVerdicts input = featureFaceVerdicts(features, inputFaceCount);
     const std::size_t first = moves_.firstInserted(), count = moves_.plan().inserted.size();
     FaceVerdicts out(m_.face.size(), kNoVerdict);
     for (std::size_t f = 0; f < m_.face.size(); ++f) {
@@ -868,9 +869,7 @@ class EvidenceGuard {
       for (int j = 0; j < 3; ++j) {
         const std::size_t v = vcg::tri::Index(m_, face.cV(j));
         if (v < first || v >= first + count) continue;
-        const std::uint32_t c = featureOf_[v - first];
-        out[f] = firstVerdict(out[f],
-                              std::int8_t(c < verdicts_.size() ? verdicts_[c] : Verdict::Restored));
+        out[f] = firstVerdict(out[f], std::int8_t(features[featureOf_[v - first]].verdict));
       }
       if (out[f] == kNoVerdict && f < input.size()) out[f] = input[f];
     }
