@@ -106,6 +106,41 @@ TEST(FeatureEvidence, DisconnectedStripsBetweenTheSameRegionsAreSeparateFeatures
   EXPECT_NE(featureOf[0], featureOf[2]);
 }
 
+// A pyramid's apex: four regions meet, and the chamfered apex holds, beside
+// its corner vertices, an edge between two opposite faces (regions 0 and 2,
+// which touch only at the apex). Every vertex of that edge shares a source
+// with the corner's: it lies inside the corner's chamfer and is part of it.
+TEST(FeatureEvidence, AnEdgeInsideACornersChamferIsPartOfIt) {
+  es::SplitPlan plan;
+  plan.originalVertexCount = 12;
+  const std::vector<long> region{0, 1, 2, 3, 0, 2, -1, -1, -1, -1, -1, -1};
+  plan.inserted = {cornerVertex(0, 1, 2), cornerVertex(2, 3, 4), edgeVertex(4, 5),
+                   edgeVertex(5, 0)};
+  std::vector<es::Feature> features;
+  const auto featureOf = es::groupFeatures(
+      plan, [&](std::size_t v) { return region[v]; }, features);
+  ASSERT_EQ(features.size(), 1u);
+  for (std::size_t k = 1; k < 4; ++k) EXPECT_EQ(featureOf[k], featureOf[0]);
+  EXPECT_TRUE(features[0].corner);
+}
+
+// An edge that runs on beyond the corner's chamfer (some vertex of it
+// touches no corner vertex) stays an edge, however short.
+TEST(FeatureEvidence, AnEdgeRunningOutOfTheCornerStaysAnEdge) {
+  es::SplitPlan plan;
+  plan.originalVertexCount = 12;
+  const std::vector<long> region{0, 1, 2, 3, 0, 2, 0, -1, -1, -1, -1, -1};
+  plan.inserted = {cornerVertex(0, 1, 2), cornerVertex(2, 3, 4), edgeVertex(4, 5),
+                   edgeVertex(5, 6)};
+  std::vector<es::Feature> features;
+  const auto featureOf = es::groupFeatures(
+      plan, [&](std::size_t v) { return region[v]; }, features);
+  ASSERT_EQ(features.size(), 2u);
+  EXPECT_EQ(featureOf[2], featureOf[3]);
+  EXPECT_NE(featureOf[2], featureOf[0]);
+  EXPECT_FALSE(features[featureOf[2]].corner);
+}
+
 TEST(FeatureEvidence, WeakWhenShortRefusedOrOffItsPlanes) {
   es::SharpenOptions opt;  // 3 vertices, half refused, 0.6 spacings off plane
   EXPECT_FALSE(es::isLeft(es::judgeFeature(feature(10, 10), opt)));

@@ -120,7 +120,11 @@ struct InputSurface {
 /// Groups the inserted vertices into features. `regionOf` gives each source
 /// vertex's region (-1: none): an edge vertex's feature is the connected set
 /// of edge vertices between the same two regions, a corner vertex's the
-/// connected set of corner vertices. Pure: reads the split plan only.
+/// connected set of corner vertices. Where four or more regions meet, a
+/// chamfered corner also holds edges between regions that touch only at the
+/// corner (a pyramid's apex: its opposite faces): an edge set each of whose
+/// vertices shares a source with a vertex of one corner lies inside that
+/// corner's chamfer, and belongs to it. Pure: reads the split plan only.
 /// \return per inserted vertex (plan.inserted order) its feature's index.
 template <class RegionOf>
 std::vector<std::uint32_t> groupFeatures(const SplitPlan &plan, RegionOf &&regionOf,
@@ -149,15 +153,39 @@ std::vector<std::uint32_t> groupFeatures(const SplitPlan &plan, RegionOf &&regio
       for (std::size_t j = 0; j < i; ++j)
         if (keyOf(list[i]) == keyOf(list[j])) parent[root(list[i])] = root(list[j]);
   constexpr std::uint32_t kNone = ~std::uint32_t(0);
+  {
+    // Per edge vertex, the one corner its sources touch (kNone: none;
+    // kMany: several), then per edge set, whether all of it touches one.
+    constexpr std::uint32_t kMany = kNone - 1;
+    const auto isCorner = [&](std::uint32_t k) { return plan.inserted[k].originalCount != 2; };
+    std::vector<std::uint32_t> touched(n, kNone);
+    for (const auto &list : sourced)
+      for (const std::uint32_t a : list)
+        for (const std::uint32_t b : list) {
+          if (isCorner(a) || !isCorner(b)) continue;
+          const std::uint32_t c = root(b);
+          touched[a] = touched[a] == kNone || touched[a] == c ? c : kMany;
+        }
+    constexpr std::uint32_t kUnset = kNone - 2;
+    std::vector<std::uint32_t> inside(n, kUnset);  // per edge set's root: its corner
+    for (std::uint32_t k = 0; k < n; ++k) {
+      if (isCorner(k)) continue;
+      std::uint32_t &c = inside[root(k)];
+      c = c == kUnset ? touched[k] : (c == touched[k] ? c : kMany);
+    }
+    for (std::uint32_t r = 0; r < n; ++r)
+      if (inside[r] < kUnset) parent[r] = root(inside[r]);
+  }
   std::vector<std::uint32_t> id(n, kNone), feature(n);
   features.clear();
   for (std::uint32_t k = 0; k < n; ++k) {
     std::uint32_t &r = id[root(k)];
     if (r == kNone) {
       r = std::uint32_t(features.size());
-      features.emplace_back().corner = plan.inserted[k].originalCount != 2;
+      features.emplace_back();
     }
     feature[k] = r;
+    features[r].corner = features[r].corner || plan.inserted[k].originalCount != 2;
   }
   return feature;
 }
