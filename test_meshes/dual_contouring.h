@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "edge_sharpener/util/qef.h"
 #include "test_meshes/shapes.h"
 
 namespace edge_sharpener {
@@ -109,32 +110,20 @@ inline Point3d signedDistanceNormal(const ScalarField &f, const Point3d &p, doub
   return g / norm;
 }
 
-/// One QEF solve: the minimiser of sum_i (n_i . (x - p_i))^2 relative to the mass point of the
-/// p_i, singular values of the stacked n_i below `cutoff` times the largest truncated. `rank`
-/// (if given) receives the number kept. \pre points.size() == normals.size() > 0
+/// One QEF solve (edge_sharpener::solveQef): the minimiser of sum_i (n_i . (x - p_i))^2
+/// relative to the mass point of the p_i, singular values of the stacked n_i below `cutoff`
+/// times the largest truncated. `rank` (if given) receives the number kept.
+/// \pre points.size() == normals.size() > 0
 inline Point3d solveQef(const std::vector<Point3d> &points, const std::vector<Point3d> &normals,
                         double cutoff, int *rank = nullptr) {
-  const int m = static_cast<int>(points.size());
   Point3d c(0, 0, 0);
   for (const Point3d &p : points) c += p;
-  c /= m;
-  Eigen::MatrixXd a(m, 3);
-  Eigen::VectorXd b(m);
-  for (int i = 0; i < m; ++i) {
-    for (int j = 0; j < 3; ++j) a(i, j) = normals[i][j];
-    b(i) = normals[i] * (points[i] - c);
-  }
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  const Eigen::VectorXd &sigma = svd.singularValues();
-  Eigen::Vector3d x = Eigen::Vector3d::Zero();
-  int kept = 0;
-  for (int k = 0; k < sigma.size(); ++k) {
-    if (!(sigma(k) > 0) || sigma(k) < cutoff * sigma(0)) continue;
-    x += svd.matrixV().col(k) * (svd.matrixU().col(k).dot(b) / sigma(k));
-    ++kept;
-  }
-  if (rank) *rank = kept;
-  return c + Point3d(x(0), x(1), x(2));
+  c /= double(points.size());
+  std::vector<Plane> planes(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) planes[i] = Plane{points[i], normals[i]};
+  const QefSolution x = edge_sharpener::solveQef(planes, {}, c, cutoff);
+  if (rank) *rank = x.rank;
+  return x.point;
 }
 
 /// Dual contouring of `f` (signed distance, negative inside) on `grid`, with normals from

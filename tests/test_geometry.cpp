@@ -4,6 +4,7 @@
 #include <random>
 
 #include "edge_sharpener/util/geometry.h"
+#include "edge_sharpener/util/qef.h"
 
 namespace es = edge_sharpener;
 using es::Plane;
@@ -505,4 +506,26 @@ TEST(FitPlaneTrimmed, DropsTheBulgeAlongARim) {
   EXPECT_GT(es::angleBetween(plain.normal, Vec3(0, 0, 1)), 1 * kDeg);
   EXPECT_LT(es::angleBetween(trimmed.normal, Vec3(0, 0, 1)), 1e-9);
   EXPECT_NEAR(trimmed.point[2], 0, 1e-12);
+}
+
+// The QEF (Ju et al.): a plane of weight 3 pulls three times as hard as one
+// of weight 1; what the planes do not fix stays at the centre; four planes
+// through one point (a pyramid's apex) fix it, whatever the centre.
+TEST(Qef, WeighsItsPlanesAndKeepsTheCentreWhereTheyFixNothing) {
+  const Plane low{Vec3(0, 0, 0), Vec3(0, 0, 1)}, high{Vec3(5, 5, 1), Vec3(0, 0, 1)};
+  es::QefSolution x = es::solveQef({low, high}, {1, 3}, Vec3(0.2, -0.3, 9));
+  EXPECT_EQ(x.rank, 1);
+  EXPECT_LT((x.point - Vec3(0.2, -0.3, 0.75)).Norm(), 1e-14);
+  const Vec3 apex(0, 0, 0.6);
+  std::vector<Plane> faces;
+  for (const Vec3 n :
+       {Vec3(1.1, 0, 0.7), Vec3(-1.1, 0, 0.7), Vec3(0, 1.1, 0.7), Vec3(0, -1.1, 0.7)})
+    faces.push_back(Plane{apex + (n ^ Vec3(0, 0, 1)) * 0.5, n / n.Norm()});  // a point off the apex
+  x = es::solveQef(faces, {}, Vec3(0.3, -0.2, 0.1));
+  EXPECT_EQ(x.rank, 3);
+  EXPECT_LT((x.point - apex).Norm(), 1e-12);
+  // Two of them, opposite faces: their line through the apex, at the point nearest the centre.
+  x = es::solveQef({faces[0], faces[1]}, {}, Vec3(0.3, -0.2, 0.1));
+  EXPECT_EQ(x.rank, 2);
+  EXPECT_LT((x.point - Vec3(0, -0.2, 0.6)).Norm(), 1e-12);
 }
