@@ -14,9 +14,11 @@ set(_es_modern_env
   "ES_CLI=$<$<TARGET_EXISTS:edge-sharpener>:$<TARGET_FILE:edge-sharpener>>")
 
 # All of them lock the trixie root: the .deb test installs into its plugin folder. The
-# fixture plugin_modern.prepare comes before the others.
-edge_sharpener_script_tests(plugin_modern prepare 1800 ENVIRONMENT ${_es_modern_env}
-  PROPERTIES RESOURCE_LOCK trixie_root FIXTURES_SETUP plugin_modern)
+# fixture plugin_modern.prepare comes before the others; its COST makes CTest start it
+# first (a clean clone has no timings), so that its downloads and three builds run
+# beside the rest of the suite instead of after most of it.
+edge_sharpener_script_tests(plugin_modern prepare 2700 ENVIRONMENT ${_es_modern_env}
+  PROPERTIES RESOURCE_LOCK trixie_root FIXTURES_SETUP plugin_modern COST 100000)
 edge_sharpener_script_tests(plugin_modern
   releases 120  scripts 600  matches_cli 900  bad_input 300  non_manifold 300  selection 300
   gui 600  deb_trixie 300

@@ -13,7 +13,7 @@ fail() {
 }
 
 start=$SECONDS
-EDGE_SHARPENER_BUILD_DIR="$ES_BUILD_DIR" nice bash "$ES_SOURCE_DIR/scripts/build-plugins.sh" 2020.09 2022.02 2025.07
+EDGE_SHARPENER_BUILD_DIR="$ES_BUILD_DIR" bash "$ES_SOURCE_DIR/scripts/build-plugins.sh" 2020.09 2022.02 2025.07
 log "three builds in $((SECONDS - start)) s"
 start=$SECONDS
 root=$(bash "$ES_SOURCE_DIR/scripts/trixie-root.sh")
