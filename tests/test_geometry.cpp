@@ -518,7 +518,7 @@ TEST(Qef, WeighsItsPlanesAndKeepsTheCentreWhereTheyFixNothing) {
   EXPECT_LT((x.point - Vec3(0.2, -0.3, 0.75)).Norm(), 1e-14);
   const Vec3 apex(0, 0, 0.6);
   std::vector<Plane> faces;
-  for (const Vec3 n :
+  for (const Vec3 &n :
        {Vec3(1.1, 0, 0.7), Vec3(-1.1, 0, 0.7), Vec3(0, 1.1, 0.7), Vec3(0, -1.1, 0.7)})
     faces.push_back(Plane{apex + (n ^ Vec3(0, 0, 1)) * 0.5, n / n.Norm()});  // a point off the apex
   x = es::solveQef(faces, {}, Vec3(0.3, -0.2, 0.1));
