@@ -432,6 +432,61 @@ def no_harm_table(cases, mult):
     return "\n".join(rows)
 
 
+def gap_closed(case, run, measure):
+    """The fraction of the gap to the information limit a run closed on `measure` ("max" or
+    "rms"): (before - after) / (before - limit), errors floored; None where the case has no
+    limit or its input is already within WORSE_MAX of it (no gap to close)."""
+    if "limit" not in case:
+        return None
+    b, a, lim = (_floored(x[measure]) for x in (case["before"], run["after"], case["limit"]))
+    if b <= lim * (1 + WORSE_MAX):
+        return None
+    return (b - a) / (b - lim)
+
+
+def _median(values):
+    v = sorted(values)
+    return (v[(len(v) - 1) // 2] + v[len(v) // 2]) / 2
+
+
+def limit_table(cases, mult):
+    """Issue 60, point 1: per grid family, the default against the information limit (dual
+    contouring with exact Hermite data on a grid of the input's cell size): geometric means of
+    the max and RMS errors of the input, the default and the limit, and the fraction of the gap
+    closed, median and minimum, with the inputs that close the least of the max gap. Inputs
+    with a designed feature within AMBIGUOUS_SPACINGS are counted apart: there the mesh alone
+    cannot tell the feature from a sampling chamfer, while the limit's exact normals can."""
+    rows = ["| family | inputs (designed feature within "
+            f"{AMBIGUOUS_SPACINGS:g} spacings, apart) | max: input / default / limit (% of "
+            "diagonal) | gap closed, median (min) | RMS: input / default / limit | gap closed, "
+            "median (min) | least max gap closed |",
+            "|---|---|---|---|---|---|---|"]
+    for kind, cs in _families(cases):
+        pairs = [(c, _run(c, DEFAULT_METHOD, mult)) for c in cs if "limit" in c
+                 and c["model"] not in NO_SHARP_FEATURES]
+        pairs = [(c, r) for c, r in pairs if r is not None and r["status"] == "ok"]
+        ambiguous = [p for p in pairs if (narrowest_designed(p[0], mult) or 1e9)
+                     <= AMBIGUOUS_SPACINGS]
+        pairs = [p for p in pairs if p not in ambiguous]
+        if not pairs:
+            continue
+        cells = []
+        for measure in ("max", "rms"):
+            means = [_gmean([_floored(x[measure]) for x in xs]) for xs in
+                     ([c["before"] for c, _ in pairs], [r["after"] for _, r in pairs],
+                      [c["limit"] for c, _ in pairs])]
+            closed = [g for g in (gap_closed(c, r, measure) for c, r in pairs) if g is not None]
+            cells += [" / ".join(f"{m:.3g}" for m in means),
+                      f"{_median(closed):.2f} ({min(closed):.2f}), {len(closed)} inputs"
+                      if closed else "–"]
+        least = sorted((g, c["model"], c["resolution"]) for g, c in
+                       ((gap_closed(c, r, "max"), c) for c, r in pairs) if g is not None)
+        cells.append(", ".join(f"{m} {res} {g:.2f}" for g, m, res in least[:3]) or "–")
+        rows.append(f"| {FAMILY_TITLES.get(kind, kind)} | {len(pairs)} ({len(ambiguous)}) | "
+                    + " | ".join(cells) + " |")
+    return "\n".join(rows) if len(rows) > 2 else ""
+
+
 def default_section(results):
     """Issue 20: the default method against its targets, per half (a list of lines)."""
     mult = results["default_multiplier"]
@@ -461,6 +516,16 @@ def default_section(results):
               "selection: the generated shapes' designed faces (those within one sample spacing "
               "of a designed feature) left out with `--skip-faces`.", "",
               no_harm_table(hc, mult), "",
+              f"The information limit (issue 60, {half} half): the generated shapes by the grid "
+              "samplers beside dual contouring with exact Hermite data (Ju et al. 2002: exact "
+              "edge crossings, the surface's normals, the QEF solved by SVD with truncation; "
+              "`dual-contour`) on a grid of the same cell size, which a post-process on a bare "
+              "mesh can at best approach. Gap closed: (input − default) / (input − limit), per "
+              "input whose error is more than 2% above the limit's. Inputs with a designed "
+              f"feature within {AMBIGUOUS_SPACINGS:g} sample spacings are counted apart (in "
+              "brackets): the mesh alone cannot tell such a feature from a chamfer, and dual "
+              "contouring itself cuts a bevel about a cell wide off (one vertex per cell).", "",
+              limit_table(hc, mult) or "(no input with a limit in this half)", "",
               f"Where the default misses a gain target ({half} half), input by input: what the "
               "default did (its report) and the input's max error in its own sample spacings "
               "(the sharpener's median edge length). Deeper than "

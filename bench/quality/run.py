@@ -77,6 +77,9 @@ DENSE_SAMPLES = 1000000
 PEER = "unsharp-mask"
 # Inputs made by the project's own sampler tools, not by meshlabserver: made in parallel.
 LOCAL_KINDS = ("vdb", "vdbproj", "scan")
+# Grid samplers: their information limit (issue 60) is dual contouring with exact Hermite data
+# on a grid of the same cell size (test_meshes/dual_contouring.h), for the generated shapes.
+GRID_KINDS = ("mc", "umr", "vdb", "vdbproj")
 SPLIT_FILE = os.path.join(HERE, "split.json")
 REAL_DIR = os.path.join(SOURCE, "test_meshes", "real")
 
@@ -172,6 +175,8 @@ class Tools:
         self.server = os.path.join(build, "meshlab-prefix", "bin", "meshlabserver")
         vdb = os.path.join(build, "bench", "samplers", "vdb-remesh")
         self.vdb = vdb if os.access(vdb, os.X_OK) else None
+        dual = os.path.join(build, "test_meshes", "dual-contour")
+        self.dual = dual if os.access(dual, os.X_OK) else None
         self.scan = [SYSTEM_PYTHON, os.path.join(SOURCE, "bench", "samplers", "tsdf_scan.py")]
         self.scan_missing = _open3d_missing()
 
@@ -614,6 +619,29 @@ def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cach
     return row
 
 
+def measure_limit(tools, model, spec, cache, timeout):
+    """The information limit of a grid sampler's input (issue 60): the distance of the dual
+    contouring of the generated shape with exact Hermite data, on a grid of the input's cell
+    size, to the reference; None where there is none (a reference mesh, a sampler without a
+    grid, dual-contour not built)."""
+    if model.group != "generated" or spec.kind not in GRID_KINDS or tools.dual is None:
+        return None
+    percent = f"{spec.res_value * 100:g}"
+    out = os.path.join(cache, "limit", f"{model.name}__{percent}pct.ply")
+    if not os.path.exists(out):
+        os.makedirs(os.path.dirname(out), exist_ok=True)
+        made = subprocess.run([tools.dual, model.name, percent, out + ".tmp"],
+                              capture_output=True, text=True, timeout=timeout)
+        if made.returncode != 0:
+            log(f"{model.name}__{spec.key}: dual-contour failed: {made.stderr.strip()}")
+            return None
+        os.replace(out + ".tmp", out)
+    d, err = measure(tools, out, model.reference, timeout, keep=True)
+    if d is None:
+        log(f"{model.name}__{spec.key}: the limit is not measurable: {err}")
+    return d
+
+
 def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout, peer=None):
     """Measures the input, sharpens it with every variant and measures each output; `peer`,
     when given, makes (or reads from the cache) the peer's output: (path or None, info)."""
@@ -627,6 +655,9 @@ def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout, pee
         case["make"] = dict(info, status="failed", why=f"input not measurable: {err}")
         return case
     case["before"] = d
+    limit = measure_limit(tools, model, spec, cache, timeout)
+    if limit is not None:
+        case["limit"] = limit
     for method in VARIANTS:
         for mult in multipliers if method in SWEPT_VARIANTS else [DEFAULT_MULTIPLIER]:
             case["runs"].append(sharpen_and_measure(tools, model, spec, in_path, d, method, mult,
