@@ -524,7 +524,10 @@ def default_section(results):
               "input whose error is more than 2% above the limit's. Inputs with a designed "
               f"feature within {AMBIGUOUS_SPACINGS:g} sample spacings are counted apart (in "
               "brackets): the mesh alone cannot tell such a feature from a chamfer, and dual "
-              "contouring itself cuts a bevel about a cell wide off (one vertex per cell).", "",
+              "contouring itself cuts a bevel about a cell wide off (one vertex per cell). One "
+              "corner three ways (input, default, limit): "
+              "[`images/corner-limit.png`](images/corner-limit.png) "
+              "(`bench/study/corner_figure.py`).", "",
               limit_table(hc, mult) or "(no input with a limit in this half)", "",
               f"Where the default misses a gain target ({half} half), input by input: what the "
               "default did (its report) and the input's max error in its own sample spacings "
