@@ -8,6 +8,9 @@
 //    surface); curved surfaces are tessellated with a maximum distance from the exact
 //    surface below 1e-4 of the bounding-box diagonal (`Shape::referenceMaxError` gives it);
 //  - a tight bounding box, sizes 1-2 units.
+// The shapes with curved sharp edges (cylinder_cut, cone_cut, torus_cut, two_cylinders) have
+// their distance as the smallest one to their trimmed boundary patches (see below), and
+// diagonals of 2.3 to 3 units.
 // `marchingCubes()` samples the distance function on a regular grid whose planes are
 // offset from every feature, so sharp edges and corners come out chamfered, as in
 // real scanned-and-remeshed data.
@@ -73,6 +76,8 @@ struct Shape {
   /// False only for shapes without creases or corners (the sphere): the sharpener must
   /// leave their marching-cubes meshes alone.
   bool hasSharpFeatures = true;
+  /// Genus of the surface (the number of handles): 1 for the cut torus, 0 for the others.
+  int genus = 0;
   /// Largest distance between the reference mesh and the exact surface: 0 for polyhedra.
   double referenceMaxError = 0;
   /// Exact signed Euclidean distance to the surface, negative inside.
@@ -564,6 +569,591 @@ inline Point3d rotateRodrigues(const Point3d& v, const Point3d& unitAxis, double
          unitAxis * ((unitAxis * v) * (1 - std::cos(angle)));
 }
 
+// Shapes with curved sharp edges (issue 60, point 3). Their distance is the smallest distance
+// to their boundary patches, each patch taken with its trimming: where the nearest point of a
+// patch's whole surface (cylinder, cone, torus) lies outside the patch, the patch's nearest
+// point lies on the patch's boundary curve, which another patch holds (or, for the
+// intersection curve of twoCylinders(), which is measured on its own), so that patch can be
+// left out. Sign: inside the solid by its defining inequalities.
+
+/// Distance from (y0, y1) to the ellipse (x0 / e0)^2 + (x1 / e1)^2 = 1 (e0, e1 > 0), to the
+/// last bits: D. Eberly, "Distance from a point to an ellipse, an ellipsoid, or a
+/// hyperellipsoid" (Geometric Tools, 2013): bisection for the root of a monotone function that
+/// gives the nearest point.
+inline double ellipseDistance(double e0, double e1, double y0, double y1) {
+  y0 = std::abs(y0);
+  y1 = std::abs(y1);
+  if (e0 < e1) {
+    std::swap(e0, e1);
+    std::swap(y0, y1);
+  }
+  if (y1 > 0) {
+    if (y0 == 0) return std::abs(y1 - e1);
+    const double z0 = y0 / e0, z1 = y1 / e1;
+    double g = z0 * z0 + z1 * z1 - 1;
+    if (g == 0) return 0;
+    const double r0 = (e0 / e1) * (e0 / e1), n0 = r0 * z0;
+    double s0 = z1 - 1, s1 = g < 0 ? 0 : std::hypot(n0, z1) - 1, s = 0;
+    // Each step halves [s0, s1]; it ends when the midpoint rounds to an end.
+    for (int i = 0; i < 2200; ++i) {
+      s = 0.5 * (s0 + s1);
+      if (s == s0 || s == s1) break;
+      const double ratio0 = n0 / (s + r0), ratio1 = z1 / (s + 1);
+      g = ratio0 * ratio0 + ratio1 * ratio1 - 1;
+      if (g > 0) {
+        s0 = s;
+      } else if (g < 0) {
+        s1 = s;
+      } else {
+        break;
+      }
+    }
+    return std::hypot(r0 * y0 / (s + r0) - y0, y1 / (s + 1) - y1);
+  }
+  const double numer0 = e0 * y0, denom0 = e0 * e0 - e1 * e1;
+  if (numer0 < denom0) {
+    const double xde0 = numer0 / denom0;
+    return std::hypot(e0 * xde0 - y0, e1 * std::sqrt(1 - xde0 * xde0));
+  }
+  return std::abs(y0 - e0);
+}
+
+/// The surface of revolution about z of a profile polygon in the (rho, z) half-plane, turning
+/// counter-clockwise (rho to the right, z up) so that its faces point outward, with `segments`
+/// meridians. A profile point on the axis (rho == 0) is a pole; a closed profile's last point
+/// joins its first. Every quad between two meridians and two parallels is a planar trapezoid.
+inline TriangleList revolvedTriangles(const std::vector<Point2d> &profile, bool closed,
+                                      int segments) {
+  TriangleList mesh;
+  const int n = static_cast<int>(profile.size());
+  std::vector<std::vector<int>> ring(n);
+  for (int j = 0; j < n; ++j) {
+    const Point2d &q = profile[j];
+    if (q.X() == 0) {
+      ring[j].assign(segments, mesh.addVertex(Point3d(0, 0, q.Y())));
+      continue;
+    }
+    for (int k = 0; k < segments; ++k) {
+      const double phi = 2 * M_PI * k / segments;
+      ring[j].push_back(
+          mesh.addVertex(Point3d(q.X() * std::cos(phi), q.X() * std::sin(phi), q.Y())));
+    }
+  }
+  for (int j = 0; j < (closed ? n : n - 1); ++j) {
+    const int next = (j + 1) % n;
+    const bool fromPole = profile[j].X() == 0, toPole = profile[next].X() == 0;
+    if (fromPole && toPole) continue;
+    for (int k = 0; k < segments; ++k) {
+      const int k1 = (k + 1) % segments;
+      const int a = ring[j][k], b = ring[j][k1], c = ring[next][k1], d = ring[next][k];
+      if (fromPole) {
+        mesh.addTriangle(a, c, d);
+      } else if (toPole) {
+        mesh.addTriangle(a, b, c);
+      } else {
+        mesh.addQuad(a, b, c, d);
+      }
+    }
+  }
+  return mesh;
+}
+
+/// A solid circular cylinder about the z axis cut below by the plane
+/// z = bottomZ + bottomSlope * x and above by z = topZ + topSlope * x (they do not meet inside
+/// the cylinder). An oblique plane makes an elliptic rim, along which the dihedral angle between
+/// the side and the cap varies.
+struct CutCylinder {
+  double radius, bottomZ, bottomSlope, topZ, topSlope;
+
+  double bottomAt(double x) const { return bottomZ + bottomSlope * x; }
+  double topAt(double x) const { return topZ + topSlope * x; }
+  /// Whether the side's generator in the direction (cosPhi, sinPhi) holds height z.
+  bool sideHolds(double cosPhi, double z) const {
+    return bottomAt(radius * cosPhi) <= z && z <= topAt(radius * cosPhi);
+  }
+
+  /// Distance to the cap in the plane z = z0 + slope * x: the plane's part inside the cylinder,
+  /// an elliptic disk with semi-axes radius * sqrt(1 + slope^2) (along (1, 0, slope)) and
+  /// radius (along y). Exact: the height over the plane and the in-plane distance to the disk.
+  double capDistance(const Point3d &p, double z0, double slope) const {
+    const double stretch = std::sqrt(1 + slope * slope);
+    const double dz = p.Z() - z0;
+    const double height = (dz - slope * p.X()) / stretch;
+    const double u = (p.X() + slope * dz) / stretch, v = p.Y();
+    const double a = radius * stretch, b = radius;
+    const double inPlane =
+        (u / a) * (u / a) + (v / b) * (v / b) <= 1 ? 0.0 : ellipseDistance(a, b, u, v);
+    return std::hypot(height, inPlane);
+  }
+
+  double signedDistance(const Point3d &p) const {
+    const double r = std::hypot(p.X(), p.Y());
+    double best = std::min(capDistance(p, topZ, topSlope), capDistance(p, bottomZ, bottomSlope));
+    // The side: the nearest point of the whole cylinder keeps the height and the direction
+    // from the axis (its only local minimum of the distance); when the side does not hold it,
+    // the side's nearest point is on a rim, which a cap holds. On the axis every direction is
+    // as near: the side holds the height in some direction iff it does in the best one, and
+    // both bounds are linear in cos(phi), so the best is cos(phi) = -1, 1 or where they cross.
+    bool onSide = false;
+    if (r > 0) {
+      onSide = sideHolds(p.X() / r, p.Z());
+    } else {
+      // z - bottomAt(R c) = topAt(R c) - z at c = (2 z - bottomZ - topZ) / (R * slopes).
+      const double slopes = topSlope + bottomSlope;
+      const double crossing =
+          slopes != 0 ? std::clamp((2 * p.Z() - bottomZ - topZ) / (radius * slopes), -1.0, 1.0)
+                      : 1.0;
+      for (double cosPhi : {-1.0, 1.0, crossing}) onSide = onSide || sideHolds(cosPhi, p.Z());
+    }
+    if (onSide) best = std::min(best, std::abs(r - radius));
+    const bool inside = r <= radius && p.Z() >= bottomAt(p.X()) && p.Z() <= topAt(p.X());
+    return inside ? -best : best;
+  }
+
+  /// `segments` generators; both rims' vertices lie on them, the caps are fans from the axis.
+  /// Every face is planar.
+  TriangleList triangles(int segments) const {
+    TriangleList mesh;
+    std::vector<int> bottom(segments), top(segments);
+    for (int k = 0; k < segments; ++k) {
+      const double phi = 2 * M_PI * k / segments;
+      const double x = radius * std::cos(phi), y = radius * std::sin(phi);
+      bottom[k] = mesh.addVertex(Point3d(x, y, bottomAt(x)));
+      top[k] = mesh.addVertex(Point3d(x, y, topAt(x)));
+    }
+    const int bottomCenter = mesh.addVertex(Point3d(0, 0, bottomZ));
+    const int topCenter = mesh.addVertex(Point3d(0, 0, topZ));
+    for (int k = 0; k < segments; ++k) {
+      const int next = (k + 1) % segments;
+      mesh.addTriangle(topCenter, top[k], top[next]);
+      mesh.addTriangle(bottomCenter, bottom[next], bottom[k]);
+      mesh.addQuad(bottom[k], bottom[next], top[next], top[k]);
+    }
+    return mesh;
+  }
+};
+
+/// Radius 0.6, height 1 on the axis; the top plane tilted 30 degrees, the bottom one 20 degrees
+/// the other way (both about y).
+inline const CutCylinder &cylinderCutParameters() {
+  static const CutCylinder cylinder{0.6, -0.55, -std::tan(20 * M_PI / 180), 0.45,
+                                    std::tan(30 * M_PI / 180)};
+  return cylinder;
+}
+
+inline Shape cylinderCut() {
+  const CutCylinder c = cylinderCutParameters();
+  const double R = c.radius;
+  const int N = 256;
+  const double topStretch = std::hypot(1.0, c.topSlope);
+  const double bottomStretch = std::hypot(1.0, c.bottomSlope);
+  Shape shape;
+  shape.name = "cylinder_cut";
+  shape.description =
+      "cylinder of radius 0.6 about z cut by two oblique planes (30 degrees at the top, 20 "
+      "the other way at the bottom, both about y; height 1 on the axis): two elliptic convex "
+      "rims whose dihedral angle runs from 60 to 120 and from 70 to 110 degrees";
+  shape.bbox = vcg::Box3d(Point3d(-R, -R, std::min(c.bottomAt(-R), c.bottomAt(R))),
+                          Point3d(R, R, std::max(c.topAt(-R), c.topAt(R))));
+  // The planes' terms linear in x cancel over the disk.
+  shape.volume = M_PI * R * R * (c.topZ - c.bottomZ);
+  shape.area = 2 * M_PI * R * (c.topZ - c.bottomZ) + M_PI * R * R * (topStretch + bottomStretch);
+  // The side's chords are a sagitta s inside the cylinder; a point of the surface between a
+  // chord and its arc (on the side below a rim, or on a cap outside its polygon) is within
+  // s * sqrt(1 + slope^2) of the mesh: the cap plane stretches the xy offset by that much.
+  shape.referenceMaxError = R * (1 - std::cos(M_PI / N)) * std::max(topStretch, bottomStretch);
+  shape.signedDistance = [c](const Point3d &p) { return c.signedDistance(p); };
+  shape.referenceTriangles = [c, N]() { return c.triangles(N); };
+  return shape;
+}
+
+/// A frustum of a cone about the z axis, radius bottomRadius at bottomZ and topRadius at topZ,
+/// with flat caps: a solid of revolution whose meridian section is a trapezoid, so its distance
+/// is the 2D distance in the meridian half-plane to the section's three edges off the axis.
+struct Frustum {
+  double bottomRadius, topRadius, bottomZ, topZ;
+  Point3d axis;  ///< allShapes() turns it by `angle` (radians) about `axis`
+  double angle = 0;
+
+  std::vector<Point2d> profile() const {
+    return {{0, bottomZ}, {bottomRadius, bottomZ}, {topRadius, topZ}, {0, topZ}};
+  }
+  double height() const { return topZ - bottomZ; }
+  double slantHeight() const { return std::hypot(bottomRadius - topRadius, height()); }
+
+  double signedDistance(const Point3d &p) const {
+    const Point2d q(std::hypot(p.X(), p.Y()), p.Z());
+    const Point2d corners[4] = {
+        {0, bottomZ}, {bottomRadius, bottomZ}, {topRadius, topZ}, {0, topZ}};
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i)
+      best = std::min(best, segmentDistanceSquared2d(q, corners[i], corners[i + 1]));
+    const double t = (q.Y() - bottomZ) / height();
+    const bool inside = t >= 0 && t <= 1 && q.X() <= bottomRadius + t * (topRadius - bottomRadius);
+    return inside ? -std::sqrt(best) : std::sqrt(best);
+  }
+};
+
+/// Radii 0.75 and 0.35, height 1.1: flanks about 20 degrees off the axis.
+inline const Frustum &coneCutParameters() {
+  static const Frustum frustum{0.75, 0.35, -0.55, 0.55, Point3d(1, -2, 1), 0.5};
+  return frustum;
+}
+
+/// The frustum, unturned.
+inline Shape coneCut() {
+  const Frustum f = coneCutParameters();
+  const int N = 256;
+  const double Rb = f.bottomRadius, Rt = f.topRadius;
+  Shape shape;
+  shape.name = "cone_cut";
+  shape.description =
+      "frustum of a cone, radii 0.75 (base) and 0.35 (top), height 1.1: convex circular rims "
+      "of 70 degrees round the base and 110 degrees round the top";
+  shape.bbox = vcg::Box3d(Point3d(-Rb, -Rb, f.bottomZ), Point3d(Rb, Rb, f.topZ));
+  shape.volume = M_PI * f.height() * (Rb * Rb + Rb * Rt + Rt * Rt) / 3;
+  shape.area = M_PI * (Rb * Rb + Rt * Rt) + M_PI * (Rb + Rt) * f.slantHeight();
+  // Each face is a planar trapezoid (or a cap's triangle) between two meridians: its chords of
+  // the parallels are at most the sagitta of the widest one from the surface.
+  shape.referenceMaxError = Rb * (1 - std::cos(M_PI / N));
+  shape.signedDistance = [f](const Point3d &p) { return f.signedDistance(p); };
+  shape.referenceTriangles = [f, N]() { return revolvedTriangles(f.profile(), false, N); };
+  return shape;
+}
+
+/// A torus about the z axis (tube of radius minorRadius round the circle of radius majorRadius
+/// in the plane z = 0) with everything above the plane z = cutZ removed (0 < cutZ < minorRadius):
+/// a flat annular cap meets the tube along two circles at a dihedral angle of
+/// 180 - acos(cutZ / minorRadius) degrees. A solid of revolution: its meridian section is a disk
+/// cut by a line (an arc and a chord).
+struct CutTorus {
+  double majorRadius, minorRadius, cutZ;
+  Point3d axis;  ///< allShapes() turns it by `angle` (radians) about `axis`
+  double angle = 0;
+
+  /// Half the chord: the rims are at rho = majorRadius -/+ halfChord().
+  double halfChord() const { return std::sqrt(minorRadius * minorRadius - cutZ * cutZ); }
+  /// The part of the tube below the cut spans pi - asin(cutZ / r) to 2 pi + asin(cutZ / r).
+  double arcAngle() const { return M_PI + 2 * std::asin(cutZ / minorRadius); }
+
+  double signedDistance(const Point3d &p) const {
+    const double dr = std::hypot(p.X(), p.Y()) - majorRadius, dz = p.Z();
+    const double len = std::hypot(dr, dz);
+    // The chord (the cap): rho in [R - w, R + w] at z = cutZ.
+    double best = std::hypot(std::max(std::abs(dr) - halfChord(), 0.0), dz - cutZ);
+    // The arc: the nearest point of the whole circle is along (dr, dz) (the only local minimum
+    // of the distance); when the arc does not hold it, the arc's nearest point is an end of it,
+    // which the chord holds. At the centre every point of the circle is as near.
+    if (len == 0) {
+      best = std::min(best, minorRadius);
+    } else if (minorRadius * dz / len <= cutZ) {
+      best = std::min(best, std::abs(len - minorRadius));
+    }
+    const bool inside = len <= minorRadius && dz <= cutZ;
+    return inside ? -best : best;
+  }
+
+  /// The meridian section's boundary, counter-clockwise: the chord from the outer rim to the
+  /// inner one, then `arcSegments` chords of the arc back.
+  std::vector<Point2d> profile(int arcSegments) const {
+    const double R = majorRadius, r = minorRadius, w = halfChord();
+    std::vector<Point2d> points = {{R + w, cutZ}, {R - w, cutZ}};
+    const double start = M_PI - std::asin(cutZ / r);
+    for (int j = 1; j < arcSegments; ++j) {
+      const double theta = start + arcAngle() * j / arcSegments;
+      points.emplace_back(R + r * std::cos(theta), r * std::sin(theta));
+    }
+    return points;
+  }
+};
+
+/// Radii 0.65 and 0.35, cut 0.1 above the centre plane: rims at radii 0.985 and 0.315,
+/// dihedral angles of 106.6 degrees.
+inline const CutTorus &torusCutParameters() {
+  static const CutTorus torus{0.65, 0.35, 0.1, Point3d(2, 1, 0.5), 0.45};
+  return torus;
+}
+
+/// The cut torus, unturned.
+inline Shape torusCut() {
+  const CutTorus t = torusCutParameters();
+  const int N = 256, arcSegments = 128;
+  const double R = t.majorRadius, r = t.minorRadius, w = t.halfChord();
+  Shape shape;
+  shape.name = "torus_cut";
+  shape.genus = 1;
+  shape.description =
+      "torus (radii 0.65 and 0.35) with everything above a plane 0.1 over its centre plane cut "
+      "off: a flat annular cap meets the torus along two convex circular rims (radii 0.985 and "
+      "0.315) of 106.6 degrees";
+  shape.bbox = vcg::Box3d(Point3d(-R - r, -R - r, -r), Point3d(R + r, R + r, t.cutZ));
+  // Pappus: the section and its boundary are symmetric about rho = R.
+  const double sectionArea = r * r * (M_PI - std::acos(t.cutZ / r)) + t.cutZ * w;
+  shape.volume = 2 * M_PI * R * sectionArea;
+  shape.area = 2 * M_PI * R * r * t.arcAngle() + 4 * M_PI * R * w;
+  // The faces are planar trapezoids between two meridians: within the sagitta of the widest
+  // parallel of the revolved polygon, which is within the arc's sagitta of the section.
+  shape.referenceMaxError =
+      (R + r) * (1 - std::cos(M_PI / N)) + r * (1 - std::cos(t.arcAngle() / arcSegments / 2));
+  shape.signedDistance = [t](const Point3d &p) { return t.signedDistance(p); };
+  shape.referenceTriangles = [t, N, arcSegments]() {
+    return revolvedTriangles(t.profile(arcSegments), true, N);
+  };
+  return shape;
+}
+
+/// A T joint of two solid cylinders: the main one about the x axis (mainRadius, |x| <=
+/// halfLength, flat ends) and a boss about the z axis (bossRadius < mainRadius, from z = 0 to
+/// its flat top at bossTop > mainRadius), unioned. The boss side meets the main side along the
+/// saddle-shaped curve (r cos t, r sin t, sqrt(R^2 - r^2 sin^2 t)): a concave edge.
+struct TeeCylinders {
+  double mainRadius, halfLength, bossRadius, bossTop;
+  Point3d axis;  ///< allShapes() turns it by `angle` (radians) about `axis`
+  double angle = 0;
+
+  /// Height of the main side over the boss side at y (|y| <= bossRadius).
+  double footHeight(double y) const { return std::sqrt(mainRadius * mainRadius - y * y); }
+  double lowestFoot() const { return footHeight(bossRadius); }
+  /// The intersection curve at boss angle t, and its first two derivatives.
+  Point3d curvePoint(double t) const {
+    const double y = bossRadius * std::sin(t);
+    return Point3d(bossRadius * std::cos(t), y, footHeight(y));
+  }
+  Point3d curveTangent(double t) const {
+    const double c = std::cos(t), s = std::sin(t), r = bossRadius;
+    return Point3d(-r * s, r * c, -r * r * s * c / footHeight(r * s));
+  }
+  Point3d curveSecondDerivative(double t) const {
+    const double c = std::cos(t), s = std::sin(t), r = bossRadius, z = footHeight(r * s);
+    return Point3d(-r * c, -r * s,
+                   -r * r * ((c * c - s * s) / z + r * r * s * s * c * c / (z * z * z)));
+  }
+  /// Bounds over t of |dz/dt|, |curve''| and |curve'|^2.
+  double footSlopeBound() const { return bossRadius * bossRadius / (2 * lowestFoot()); }
+  double curveSecondDerivativeBound() const {
+    const double r2 = bossRadius * bossRadius, z = lowestFoot();
+    return std::hypot(bossRadius, r2 / z + r2 * r2 / (4 * z * z * z));
+  }
+  double curveSpeedSquaredBound() const {
+    return bossRadius * bossRadius + footSlopeBound() * footSlopeBound();
+  }
+
+  /// Distance from p to the intersection curve, or `bound` when the curve is no nearer: branch
+  /// and bound over t on the squared distance g (|g''| <= K, so g >= min(g(a), g(b)) - K h^2 / 8
+  /// on [a, b], h = b - a) down to intervals of 1e-12, then Newton steps on g' = 0.
+  double curveDistance(const Point3d &p, double bound) const {
+    const double K =
+        2 * curveSpeedSquaredBound() +
+        2 * (p.Norm() + std::hypot(mainRadius, bossRadius)) * curveSecondDerivativeBound();
+    const auto g = [&](double t) { return (p - curvePoint(t)).SquaredNorm(); };
+    constexpr int kSamples = 128;
+    const double h0 = 2 * M_PI / kSamples;
+    double bestG = bound * bound, bestT = std::numeric_limits<double>::quiet_NaN();
+    struct Interval {
+      double a, b, ga, gb;
+    };
+    std::vector<Interval> open;
+    double previous = g(0);
+    if (previous < bestG) bestG = previous, bestT = 0;
+    for (int i = 0; i < kSamples; ++i) {
+      const double b = i + 1 == kSamples ? 2 * M_PI : (i + 1) * h0;
+      const double gb = i + 1 == kSamples ? g(0) : g(b);
+      if (gb < bestG) bestG = gb, bestT = b;
+      open.push_back({i * h0, b, previous, gb});
+      previous = gb;
+    }
+    while (!open.empty()) {
+      const Interval v = open.back();
+      open.pop_back();
+      const double h = v.b - v.a;
+      if (std::min(v.ga, v.gb) - K * h * h / 8 >= bestG || h < 1e-12) continue;
+      const double m = 0.5 * (v.a + v.b), gm = g(m);
+      if (gm < bestG) bestG = gm, bestT = m;
+      open.push_back({v.a, m, v.ga, gm});
+      open.push_back({m, v.b, gm, v.gb});
+    }
+    if (std::isnan(bestT)) return bound;
+    for (int i = 0; i < 8; ++i) {
+      const Point3d d = p - curvePoint(bestT), tangent = curveTangent(bestT);
+      const double slope = -2 * (d * tangent);
+      const double curvature = 2 * tangent.SquaredNorm() - 2 * (d * curveSecondDerivative(bestT));
+      if (!(curvature > 0)) break;
+      const double t = bestT - slope / curvature, gt = g(t);
+      if (!(gt < bestG)) break;
+      bestG = gt;
+      bestT = t;
+    }
+    return std::sqrt(bestG);
+  }
+
+  double signedDistance(const Point3d &p) const {
+    const double R = mainRadius, L = halfLength, r = bossRadius, H = bossTop;
+    const double x = p.X(), y = p.Y(), z = p.Z();
+    const double rhoMain = std::hypot(y, z), rhoBoss = std::hypot(x, y);
+    // The main cylinder's ends and the boss top: disks.
+    const double outsideMain = std::max(rhoMain - R, 0.0);
+    double best = std::min(std::hypot(x - L, outsideMain), std::hypot(x + L, outsideMain));
+    best = std::min(best, std::hypot(z - H, std::max(rhoBoss - r, 0.0)));
+    // The main side without the boss's opening. The nearest point of the whole cylinder keeps
+    // x and the direction from the axis; when it falls in the opening (or past an end), the
+    // side's nearest point is on the intersection curve (or an end's rim). On the axis every
+    // direction is as near, straight down among them, never in the opening.
+    if (std::abs(x) <= L) {
+      const double qy = rhoMain > 0 ? R * y / rhoMain : 0.0;
+      const double qz = rhoMain > 0 ? R * z / rhoMain : -R;
+      if (!(qz > 0 && x * x + qy * qy < r * r)) best = std::min(best, std::abs(rhoMain - R));
+    }
+    // The boss side above the curve, likewise; on its axis the lowest point of the curve, at
+    // y = +-r, is the best direction.
+    const double qy = rhoBoss > 0 ? r * y / rhoBoss : r;
+    if (z <= H && z >= footHeight(qy)) best = std::min(best, std::abs(rhoBoss - r));
+    // The intersection curve lies on both cylinders: no nearer than either.
+    if (best > std::max(std::abs(rhoMain - R), std::abs(rhoBoss - r)))
+      best = std::min(best, curveDistance(p, best));
+    const bool inside = (rhoMain <= R && std::abs(x) <= L) || (rhoBoss <= r && z >= 0 && z <= H);
+    return inside ? -best : best;
+  }
+
+  /// `segments` (a multiple of 4) columns round the boss, from the curve to its top. The main
+  /// side is cut into strips between lines parallel to x: one through each pair of curve
+  /// vertices with the same y (the left and right side of the opening), and evenly spaced ones
+  /// round the rest, no wider; each strip (or each half of one beside the opening) is a planar
+  /// polygon with its vertices on the surface. The ends and the boss top are fans.
+  TriangleList triangles(int segments) const {
+    const double R = mainRadius, L = halfLength, r = bossRadius, H = bossTop;
+    const int N = segments, quarter = N / 4;
+    TriangleList mesh;
+    // The curve: the half x >= 0 computed, the other half mirrored (the same y and z).
+    std::vector<Point3d> curve(N);
+    for (int j = -quarter; j <= quarter; ++j) {
+      const double t = 2 * M_PI * j / N;
+      const double c = std::abs(j) == quarter ? 0.0 : std::cos(t);
+      const double s = j == quarter ? 1.0 : j == -quarter ? -1.0 : std::sin(t);
+      const Point3d point(r * c, r * s, footHeight(r * s));
+      curve[(j + N) % N] = point;
+      curve[(N / 2 - j + N) % N] = Point3d(-point.X(), point.Y(), point.Z());
+    }
+    std::vector<int> foot(N), rim(N);
+    for (int k = 0; k < N; ++k) {
+      foot[k] = mesh.addVertex(curve[k]);
+      rim[k] = mesh.addVertex(Point3d(curve[k].X(), curve[k].Y(), H));
+    }
+    const int topCenter = mesh.addVertex(Point3d(0, 0, H));
+    for (int k = 0; k < N; ++k) {
+      const int next = (k + 1) % N;
+      mesh.addTriangle(topCenter, rim[k], rim[next]);
+      mesh.addQuad(foot[k], foot[next], rim[next], rim[k]);
+    }
+    // Lines on the main side in the order of psi = atan2(y, z): the opening's from -asin(r / R)
+    // to asin(r / R), then the rest round the bottom.
+    struct Line {
+      double y, z;
+      int left = -1, right = -1;  // the curve vertices on it (x < 0, x > 0), if any
+    };
+    std::vector<Line> lines;
+    for (int j = -quarter; j <= quarter; ++j) {
+      const Point3d &q = curve[(j + N) % N];
+      lines.push_back({q.Y(), q.Z(), foot[(N / 2 - j + N) % N], foot[(j + N) % N]});
+    }
+    const double opening = std::asin(r / R);
+    const double rest = 2 * M_PI - 2 * opening;
+    const int restSegments = static_cast<int>(std::ceil(rest / widestMainStep(N)));
+    for (int i = 1; i < restSegments; ++i) {
+      const double psi = opening + rest * i / restSegments;
+      lines.push_back({R * std::sin(psi), R * std::cos(psi)});
+    }
+    const int lineCount = static_cast<int>(lines.size());
+    std::vector<int> minus(lineCount), plus(lineCount);
+    for (int i = 0; i < lineCount; ++i) {
+      minus[i] = mesh.addVertex(Point3d(-L, lines[i].y, lines[i].z));
+      plus[i] = mesh.addVertex(Point3d(L, lines[i].y, lines[i].z));
+    }
+    // Counter-clockwise seen from outside: along a line towards +x, then back along the next.
+    for (int i = 0; i < lineCount; ++i) {
+      const int n = (i + 1) % lineCount;
+      const Line &a = lines[i], &b = lines[n];
+      if (a.right >= 0 && b.right >= 0) {  // beside the opening: two quads
+        mesh.addQuad(minus[i], a.left, b.left, minus[n]);
+        mesh.addQuad(a.right, plus[i], plus[n], b.right);
+      } else if (a.right >= 0) {  // from the opening's last line (its tip): a pentagon
+        mesh.addTriangle(minus[n], minus[i], a.right);
+        mesh.addTriangle(minus[n], a.right, plus[i]);
+        mesh.addTriangle(minus[n], plus[i], plus[n]);
+      } else if (b.right >= 0) {  // to the opening's first line (its other tip)
+        mesh.addTriangle(minus[i], plus[i], plus[n]);
+        mesh.addTriangle(minus[i], plus[n], b.right);
+        mesh.addTriangle(minus[i], b.right, minus[n]);
+      } else {
+        mesh.addQuad(minus[i], plus[i], plus[n], minus[n]);
+      }
+    }
+    const int minusCenter = mesh.addVertex(Point3d(-L, 0, 0));
+    const int plusCenter = mesh.addVertex(Point3d(L, 0, 0));
+    for (int i = 0; i < lineCount; ++i) {
+      const int n = (i + 1) % lineCount;
+      mesh.addTriangle(plusCenter, plus[n], plus[i]);
+      mesh.addTriangle(minusCenter, minus[i], minus[n]);
+    }
+    return mesh;
+  }
+
+  /// The largest angle about the x axis between two neighbouring lines of triangles() beside
+  /// the opening; the lines round the rest are no farther apart.
+  double widestMainStep(int segments) const {
+    double widest = 0;
+    for (int j = -segments / 4; j < segments / 4; ++j) {
+      const double y0 = bossRadius * std::sin(2 * M_PI * j / segments);
+      const double y1 = bossRadius * std::sin(2 * M_PI * (j + 1) / segments);
+      widest = std::max(widest, std::atan2(y1, footHeight(y1)) - std::atan2(y0, footHeight(y0)));
+    }
+    return widest;
+  }
+};
+
+/// Main cylinder radius 0.5, length 2; boss radius 0.35, top 0.95 above the main axis.
+inline const TeeCylinders &twoCylindersParameters() {
+  static const TeeCylinders tee{0.5, 1.0, 0.35, 0.95, Point3d(3, 1, 1), 0.4};
+  return tee;
+}
+
+/// The T joint, unturned.
+inline Shape twoCylinders() {
+  const TeeCylinders c = twoCylindersParameters();
+  const int N = 256;
+  const double R = c.mainRadius, L = c.halfLength, r = c.bossRadius, H = c.bossTop;
+  // Complete elliptic integrals of the modulus k = r / R: the curve's height integrates to them.
+  const double k = r / R, K = std::comp_ellint_1(k), E = std::comp_ellint_2(k);
+  Shape shape;
+  shape.name = "two_cylinders";
+  shape.description =
+      "cylinder (radius 0.5, length 2) with a perpendicular cylinder boss (radius 0.35, top 0.95 "
+      "above the axis) unioned in, flat ends: a concave saddle-shaped intersection edge "
+      "(dihedral angle 270 to 226 degrees), convex circular rims round the ends and the boss top";
+  shape.bbox = vcg::Box3d(Point3d(-L, -R, -R), Point3d(L, R, H));
+  // The boss above the main side: pi r^2 H minus the integral of the side's height over the
+  // disk, (4/3) R^3 ((1 + k^2) E - (1 - k^2) K); the opening in the main side has area
+  // 4 R^2 (E - (1 - k^2) K); the boss side is 2 pi r H minus r times the curve's height
+  // integrated over t, 4 R E.
+  shape.volume = 2 * M_PI * R * R * L + M_PI * r * r * H -
+                 4.0 / 3 * R * R * R * ((1 + k * k) * E - (1 - k * k) * K);
+  shape.area = 4 * M_PI * R * L - 4 * R * R * (E - (1 - k * k) * K) + 2 * M_PI * R * R +
+               2 * M_PI * r * H - 4 * R * r * E + M_PI * r * r;
+  // Faces on the sides are within their chords' sagittas (s_main, s_boss) of their cylinders;
+  // next to the curve a point of a face, or of the surface, between a chord of the curve and
+  // the curve is within the chord's sagitta (|curve''| dt^2 / 8) plus 2 s_main (the main
+  // faces), or plus s_boss and the boss chord's height error (|dz/dt| tan^3(dt / 2) / 4, from
+  // the angle a chord point sits at), of the curve.
+  const double dt = 2 * M_PI / N;
+  const double mainSagitta = R * (1 - std::cos(c.widestMainStep(N) / 2));
+  const double bossSagitta = r * (1 - std::cos(dt / 2));
+  shape.referenceMaxError = 2 * mainSagitta + bossSagitta +
+                            c.curveSecondDerivativeBound() * dt * dt / 8 +
+                            c.footSlopeBound() * std::pow(std::tan(dt / 2), 3) / 4;
+  shape.signedDistance = [c](const Point3d &p) { return c.signedDistance(p); };
+  shape.referenceTriangles = [c, N]() { return c.triangles(N); };
+  return shape;
+}
+
 }  // namespace detail
 
 /// The shape rotated about `axis` through the origin: its features are then oblique to
@@ -603,6 +1193,15 @@ inline const std::vector<Shape>& allShapes() {
     // Designed bevels and fillets beside sharp edges, oblique to the grid.
     for (const detail::FinishedPrism* p : detail::finishedPrisms())
       list.push_back(rotated(detail::finishedPrismShape(*p), p->axis, p->angle, p->name));
+    // Curved sharp edges (issue 60): the cut cylinder's caps are oblique to the grid already,
+    // the others are turned so that no rim lies in a grid plane.
+    list.push_back(detail::cylinderCut());
+    const detail::Frustum &cone = detail::coneCutParameters();
+    list.push_back(rotated(detail::coneCut(), cone.axis, cone.angle, "cone_cut"));
+    const detail::CutTorus &torus = detail::torusCutParameters();
+    list.push_back(rotated(detail::torusCut(), torus.axis, torus.angle, "torus_cut"));
+    const detail::TeeCylinders &tee = detail::twoCylindersParameters();
+    list.push_back(rotated(detail::twoCylinders(), tee.axis, tee.angle, "two_cylinders"));
     return list;
   }();
   return shapes;

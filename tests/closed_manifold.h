@@ -11,9 +11,9 @@
 namespace edge_sharpener::testing {
 
 /// Two-manifold, watertight (no border edge), coherently oriented, outward (positive
-/// volume), one component of genus 0.
+/// volume), one component of the given genus (0: sphere-like).
 template <class M>
-void expectClosedManifold(M &mesh, const std::string &what) {
+void expectClosedManifold(M &mesh, const std::string &what, int genus = 0) {
   SCOPED_TRACE(what);
   ASSERT_GT(mesh.fn, 0);
   int edges = 0, borderEdges = 0, nonManifoldEdges = 0;
@@ -26,7 +26,8 @@ void expectClosedManifold(M &mesh, const std::string &what) {
   EXPECT_EQ(vcg::tri::Clean<M>::CountNonManifoldVertexFF(mesh, /*selectVert=*/false), 0);
   EXPECT_TRUE(vcg::tri::Clean<M>::IsCoherentlyOrientedMesh(mesh));
   EXPECT_EQ(vcg::tri::Clean<M>::CountConnectedComponents(mesh), 1);
-  EXPECT_EQ(mesh.vn - edges + mesh.fn, 2) << "Euler characteristic of a sphere-like surface";
+  EXPECT_EQ(mesh.vn - edges + mesh.fn, 2 - 2 * genus)
+      << "Euler characteristic of a closed surface of genus " << genus;
   vcg::tri::Inertia<M> inertia(mesh);
   EXPECT_GT(inertia.Mass(), 0) << "faces must point outward";
 }

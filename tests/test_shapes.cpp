@@ -2,6 +2,8 @@
 // meshes that are clean closed manifolds with the chamfers the sharpener has to remove.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -29,8 +31,8 @@ using shapes::Point3d;
 /// A closed solid's mesh (expectClosedManifold), with every vertex referenced and no
 /// zero-area face.
 template <class M>
-void expectClosedOrientedManifold(M& mesh, const std::string& what) {
-  edge_sharpener::testing::expectClosedManifold(mesh, what);
+void expectClosedOrientedManifold(M &mesh, const std::string &what, int genus = 0) {
+  edge_sharpener::testing::expectClosedManifold(mesh, what, genus);
   SCOPED_TRACE(what);
   EXPECT_EQ(vcg::tri::Clean<M>::CountUnreferencedVertex(mesh), 0);
   for (const auto& f : mesh.face) EXPECT_GT(vcg::DoubleArea(f), 0) << "zero-area face";
@@ -56,8 +58,9 @@ TEST(MeshesShapeRegistry, HasTheRequiredShapesWithSensibleSizes) {
   const std::vector<std::string> names = shapes::shapeNames();
   const std::set<std::string> unique(names.begin(), names.end());
   EXPECT_EQ(unique.size(), names.size());
-  for (const char* required :
-       {"cube", "lblock", "wedge", "pyramid", "cross_prism", "cylinder_block", "sphere"})
+  for (const char *required :
+       {"cube", "lblock", "wedge", "pyramid", "cross_prism", "cylinder_block", "sphere",
+        "cylinder_cut", "cone_cut", "torus_cut", "two_cylinders"})
     EXPECT_EQ(unique.count(required), 1u) << required;
   for (const std::string& name : names) {
     const shapes::Shape& shape = shapes::shapeByName(name);
@@ -121,7 +124,7 @@ TEST(MeshesSignedDistance, RotatedShapeRotatesTheDistanceField) {
 TEST_P(ShapeTest, ReferenceIsClosedOrientedManifoldWithExactVolumeAndArea) {
   MeshD reference;
   shapes::buildReference(shape(), reference);
-  expectClosedOrientedManifold(reference, "reference " + shape().name);
+  expectClosedOrientedManifold(reference, "reference " + shape().name, shape().genus);
   // Polyhedra are exact; curved surfaces are inscribed, within the stated error.
   const double error = shape().referenceMaxError;
   EXPECT_LT(error, 1e-4 * shape().diagonal());
@@ -130,7 +133,7 @@ TEST_P(ShapeTest, ReferenceIsClosedOrientedManifoldWithExactVolumeAndArea) {
   // The float mesh type works as well.
   Mesh referenceFloat;
   shapes::buildReference(shape(), referenceFloat);
-  expectClosedOrientedManifold(referenceFloat, "float reference " + shape().name);
+  expectClosedOrientedManifold(referenceFloat, "float reference " + shape().name, shape().genus);
 }
 
 TEST_P(ShapeTest, ReferenceLiesOnTheZeroSetAndFacesPointOutward) {
@@ -175,7 +178,7 @@ TEST_P(ShapeTest, MarchingCubesIsACleanClosedManifoldCloseToTheShape) {
   const double cell = shapes::cellSizeForDiagonalFraction(shape(), 0.02);
   Mesh mc;
   shapes::marchingCubes(shape(), cell, mc);
-  expectClosedOrientedManifold(mc, "marching cubes " + shape().name);
+  expectClosedOrientedManifold(mc, "marching cubes " + shape().name, shape().genus);
   for (const auto& v : mc.vert)
     ASSERT_LT(std::abs(shape().signedDistance(Point3d::Construct(v.cP()))), 0.5 * cell);
   // Chamfers cut sharp edges and fill concave ones: with cells of 2% of the diagonal they
@@ -221,6 +224,200 @@ INSTANTIATE_TEST_SUITE_P(Meshes, ShapeTest, ::testing::ValuesIn(shapes::shapeNam
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            return info.param;
                          });
+
+// The shapes with curved sharp edges (issue 60): a point of an edge with the unit outward
+// normals of its two faces there, in the frame of the shape as allShapes() has it.
+struct EdgePoint {
+  Point3d point, normal1, normal2;
+  bool convex;
+};
+
+std::vector<EdgePoint> curvedEdgePoints(const std::string &name) {
+  namespace detail = shapes::detail;
+  std::vector<EdgePoint> points;
+  Point3d axis(1, 0, 0);
+  double angle = 0;
+  // 97 generic angles round each edge.
+  const auto around = [](int i) { return 2 * M_PI * (i + 0.37) / 97; };
+  if (name == "cylinder_cut") {
+    const detail::CutCylinder &c = detail::cylinderCutParameters();
+    const Point3d top = Point3d(-c.topSlope, 0, 1).Normalize();
+    const Point3d bottom = Point3d(c.bottomSlope, 0, -1).Normalize();
+    for (int i = 0; i < 97; ++i) {
+      const double x = c.radius * std::cos(around(i)), y = c.radius * std::sin(around(i));
+      const Point3d side(std::cos(around(i)), std::sin(around(i)), 0);
+      points.push_back({Point3d(x, y, c.topAt(x)), side, top, true});
+      points.push_back({Point3d(x, y, c.bottomAt(x)), side, bottom, true});
+    }
+  } else if (name == "cone_cut") {
+    const detail::Frustum &f = detail::coneCutParameters();
+    axis = f.axis;
+    angle = f.angle;
+    for (int i = 0; i < 97; ++i) {
+      const double cosPhi = std::cos(around(i)), sinPhi = std::sin(around(i));
+      // The flank's normal: the meridian's edge (Rt - Rb, h) turned clockwise.
+      const Point3d flank =
+          Point3d(f.height() * cosPhi, f.height() * sinPhi, f.bottomRadius - f.topRadius) /
+          f.slantHeight();
+      points.push_back({Point3d(f.bottomRadius * cosPhi, f.bottomRadius * sinPhi, f.bottomZ), flank,
+                        Point3d(0, 0, -1), true});
+      points.push_back({Point3d(f.topRadius * cosPhi, f.topRadius * sinPhi, f.topZ), flank,
+                        Point3d(0, 0, 1), true});
+    }
+  } else if (name == "torus_cut") {
+    const detail::CutTorus &t = detail::torusCutParameters();
+    axis = t.axis;
+    angle = t.angle;
+    const double w = t.halfChord();
+    for (int i = 0; i < 97; ++i) {
+      const double cosPhi = std::cos(around(i)), sinPhi = std::sin(around(i));
+      for (const double side : {1.0, -1.0}) {  // outer and inner rim
+        const double rho = t.majorRadius + side * w;
+        const Point3d tube = Point3d(side * w * cosPhi, side * w * sinPhi, t.cutZ) / t.minorRadius;
+        points.push_back(
+            {Point3d(rho * cosPhi, rho * sinPhi, t.cutZ), tube, Point3d(0, 0, 1), true});
+      }
+    }
+  } else if (name == "two_cylinders") {
+    const detail::TeeCylinders &c = detail::twoCylindersParameters();
+    axis = c.axis;
+    angle = c.angle;
+    for (int i = 0; i < 97; ++i) {
+      const double t = around(i);
+      const Point3d boss(std::cos(t), std::sin(t), 0);
+      const Point3d foot = c.curvePoint(t);
+      points.push_back({foot, boss, Point3d(0, foot.Y(), foot.Z()) / c.mainRadius, false});
+      points.push_back({Point3d(c.bossRadius * boss.X(), c.bossRadius * boss.Y(), c.bossTop), boss,
+                        Point3d(0, 0, 1), true});
+      const Point3d main(0, std::sin(t), std::cos(t));
+      for (const double end : {-1.0, 1.0})
+        points.push_back({Point3d(end * c.halfLength, 0, 0) + main * c.mainRadius, main,
+                          Point3d(end, 0, 0), true});
+    }
+  }
+  const Point3d unitAxis = axis / axis.Norm();
+  for (EdgePoint &e : points) {
+    e.point = shapes::detail::rotateRodrigues(e.point, unitAxis, angle);
+    e.normal1 = shapes::detail::rotateRodrigues(e.normal1, unitAxis, angle);
+    e.normal2 = shapes::detail::rotateRodrigues(e.normal2, unitAxis, angle);
+  }
+  return points;
+}
+
+/// vcglib's PointDistanceBase (GetClosestFaceBase) measures a point whose projection falls
+/// outside a triangle against the first edge it finds outside of: on long thin triangles
+/// (the curved shapes' strips) it can miss the nearer one. This functor for the grid's
+/// GetClosest measures every triangle exactly.
+struct ExactTriangleDistance {
+  using QueryType = Point3d;
+  static const Point3d &Pos(const Point3d &p) { return p; }
+  template <class F>
+  bool operator()(const F &f, const Point3d &p, double &minDist, Point3d &closest) const {
+    const vcg::Triangle3<double> triangle(f.cP(0), f.cP(1), f.cP(2));
+    double distance;
+    Point3d nearest;
+    vcg::TrianglePointDistance(triangle, p, distance, nearest);
+    if (!(distance < minDist)) return false;
+    minDist = distance;
+    closest = nearest;
+    return true;
+  }
+};
+
+const char *const kCurvedEdgeShapes[] = {"cylinder_cut", "cone_cut", "torus_cut", "two_cylinders"};
+
+// On each edge the distance is 0. A step d along the outward bisector b of the two normals
+// leaves the edge point nearest on one side (outside a convex edge, inside a concave one): the
+// distance is d. On the other side the faces are nearest, at d cos(beta) (beta: half the angle
+// between the normals) from their tangent planes, up to their curvature: within d^2 / rho of
+// it, rho = 0.3 being below every radius of curvature near the edges. Near the edges, where the
+// patches' trimming decides, the distance is the one to the reference mesh.
+TEST(MeshesCurvedEdgeShapes, SignedDistanceIsExactAtTheirEdges) {
+  const double d = 1e-3, curvatureTolerance = d * d / 0.3;
+  for (const char *name : kCurvedEdgeShapes) {
+    SCOPED_TRACE(name);
+    const shapes::Shape &shape = shapes::shapeByName(name);
+    const std::vector<EdgePoint> edges = curvedEdgePoints(name);
+    ASSERT_GE(edges.size(), 194u);
+    MeshD reference;
+    shapes::buildReference(shape, reference);
+    vcg::GridStaticPtr<MeshD::FaceType, double> grid;
+    grid.Set(reference.face.begin(), reference.face.end());
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> offset(-0.05, 0.05);
+    double worstOnEdge = 0, worstNear = 0;
+    for (const EdgePoint &e : edges) {
+      ASSERT_NEAR(e.normal1.Norm(), 1.0, 1e-12);
+      ASSERT_NEAR(e.normal2.Norm(), 1.0, 1e-12);
+      const double onEdge = shape.signedDistance(e.point);
+      worstOnEdge = std::max(worstOnEdge, std::abs(onEdge));
+      ASSERT_LT(std::abs(onEdge), 1e-12)
+          << "edge point " << e.point.X() << " " << e.point.Y() << " " << e.point.Z();
+      const Point3d bisector = (e.normal1 + e.normal2).Normalize();
+      const double cosBeta = bisector * e.normal1;
+      ASSERT_GT(cosBeta, 0.3);  // a sharp edge, not a tangent contact
+      const double outside = shape.signedDistance(e.point + bisector * d);
+      const double inside = shape.signedDistance(e.point - bisector * d);
+      if (e.convex) {
+        EXPECT_NEAR(outside, d, 1e-12);
+        EXPECT_LT(inside, 0);
+        EXPECT_NEAR(inside, -d * cosBeta, curvatureTolerance);
+      } else {
+        EXPECT_NEAR(inside, -d, curvatureTolerance);
+        EXPECT_GT(outside, 0);
+        EXPECT_NEAR(outside, d * cosBeta, curvatureTolerance);
+      }
+      for (int k = 0; k < 3; ++k) {
+        const Point3d p = e.point + Point3d(offset(random), offset(random), offset(random));
+        double distance = 10;
+        Point3d closest;
+        vcg::tri::FaceTmark<MeshD> marker;
+        marker.SetMesh(&reference);
+        ExactTriangleDistance exact;
+        ASSERT_NE(grid.GetClosest(exact, marker, p, 10.0, distance, closest), nullptr);
+        const double error = std::abs(std::abs(shape.signedDistance(p)) - distance);
+        worstNear = std::max(worstNear, error);
+        ASSERT_LE(error, 1e-9 + shape.referenceMaxError)
+            << "at " << p.X() << " " << p.Y() << " " << p.Z();
+      }
+    }
+    std::printf(
+        "%s: %zu edge points, max |sdf| on them %.2g; near them |sdf| - distance to the "
+        "reference within %.2g (reference error %.2g)\n",
+        name, edges.size(), worstOnEdge, worstNear, shape.referenceMaxError);
+  }
+}
+
+// The reference meshes' vertices lie on the surface, and their faces within
+// referenceMaxError of it (sampled at their centroids and near their corners).
+TEST(MeshesCurvedEdgeShapes, ReferenceLiesWithinItsStatedError) {
+  for (const char *name : kCurvedEdgeShapes) {
+    SCOPED_TRACE(name);
+    const shapes::Shape &shape = shapes::shapeByName(name);
+    const shapes::TriangleList mesh = shape.referenceTriangles();
+    for (const Point3d &v : mesh.vertices)
+      ASSERT_LE(std::abs(shape.signedDistance(v)), shape.referenceMaxError + 1e-9);
+    double worst = 0;
+    for (const auto &t : mesh.triangles) {
+      const Point3d &a = mesh.vertices[t[0]];
+      const Point3d &b = mesh.vertices[t[1]];
+      const Point3d &c = mesh.vertices[t[2]];
+      for (const Point3d &weights :
+           {Point3d(1, 1, 1) / 3, Point3d(0.6, 0.2, 0.2), Point3d(0.2, 0.6, 0.2),
+            Point3d(0.2, 0.2, 0.6), Point3d(0.5, 0.5, 0), Point3d(0, 0.5, 0.5),
+            Point3d(0.5, 0, 0.5)})
+        worst = std::max(worst, std::abs(shape.signedDistance(a * weights[0] + b * weights[1] +
+                                                              c * weights[2])));
+    }
+    std::printf(
+        "%s: %zu faces, max |sdf| on them %.3g, stated bound %.3g (%.2g of the "
+        "diagonal)\n",
+        name, mesh.triangles.size(), worst, shape.referenceMaxError,
+        shape.referenceMaxError / shape.diagonal());
+    EXPECT_LE(worst, shape.referenceMaxError + 1e-12);
+    EXPECT_GT(worst, 0.1 * shape.referenceMaxError);  // the bound is not far off either
+  }
+}
 
 TEST(MeshesMarchingCubes, ChamfersShrinkWithTheCellSize) {
   const shapes::Shape& cube = shapes::shapeByName("cube");

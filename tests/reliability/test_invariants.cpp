@@ -48,9 +48,16 @@ std::ostream &operator<<(std::ostream &os, const Case &c) {
   return os << c.shape << "@" << c.fraction * 100 << "%x" << c.multiplier;
 }
 
+/// The shapes this suite was sized on (9 cases each, also run under AddressSanitizer). The
+/// curved-edge shapes allShapes() gained for issue 60 (cylinder_cut, cone_cut, torus_cut,
+/// two_cylinders) are left out, so that the suite's length stays what it was.
+const char *const kShapes[] = {"cube",           "lblock",           "wedge",  "pyramid",
+                               "cross_prism",    "cylinder_block",   "sphere", "lblock_tilted",
+                               "bevelled_block", "finished_hexprism"};
+
 std::vector<Case> allCases() {
   std::vector<Case> cases;
-  for (const std::string &s : shapes::shapeNames())
+  for (const std::string s : kShapes)
     for (double f : kFractions)
       for (double m : kMultipliers) cases.push_back({s, f, m, int(cases.size())});
   return cases;
