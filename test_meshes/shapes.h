@@ -63,6 +63,19 @@ struct TriangleList {
     addTriangle(a, b, c);
     addTriangle(a, c, d);
   }
+  /// The side band between two rings of vertices (counter-clockwise seen from the top),
+  /// closed by fans from `topCenter` and `bottomCenter` (negative: left open, a boss
+  /// standing on another surface).
+  void addCappedBand(const std::vector<int>& bottom, const std::vector<int>& top, int bottomCenter,
+                     int topCenter) {
+    const std::size_t n = top.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t next = (k + 1) % n;
+      addTriangle(topCenter, top[k], top[next]);
+      if (bottomCenter >= 0) addTriangle(bottomCenter, bottom[next], bottom[k]);
+      addQuad(bottom[k], bottom[next], top[next], top[k]);
+    }
+  }
 };
 
 struct Shape {
@@ -154,12 +167,7 @@ struct Prism {
     }
     const int bottomCenter = mesh.addVertex(Point3d(fanCenter.X(), fanCenter.Y(), zMin));
     const int topCenter = mesh.addVertex(Point3d(fanCenter.X(), fanCenter.Y(), zMax));
-    for (int i = 0; i < n; ++i) {
-      const int next = (i + 1) % n;
-      mesh.addTriangle(topCenter, top[i], top[next]);
-      mesh.addTriangle(bottomCenter, bottom[next], bottom[i]);
-      mesh.addQuad(bottom[i], bottom[next], top[next], top[i]);
-    }
+    mesh.addCappedBand(bottom, top, bottomCenter, topCenter);
     return mesh;
   }
 
@@ -723,12 +731,7 @@ struct CutCylinder {
     }
     const int bottomCenter = mesh.addVertex(Point3d(0, 0, bottomZ));
     const int topCenter = mesh.addVertex(Point3d(0, 0, topZ));
-    for (int k = 0; k < segments; ++k) {
-      const int next = (k + 1) % segments;
-      mesh.addTriangle(topCenter, top[k], top[next]);
-      mesh.addTriangle(bottomCenter, bottom[next], bottom[k]);
-      mesh.addQuad(bottom[k], bottom[next], top[next], top[k]);
-    }
+    mesh.addCappedBand(bottom, top, bottomCenter, topCenter);
     return mesh;
   }
 };
@@ -1039,11 +1042,7 @@ struct TeeCylinders {
       rim[k] = mesh.addVertex(Point3d(curve[k].X(), curve[k].Y(), H));
     }
     const int topCenter = mesh.addVertex(Point3d(0, 0, H));
-    for (int k = 0; k < N; ++k) {
-      const int next = (k + 1) % N;
-      mesh.addTriangle(topCenter, rim[k], rim[next]);
-      mesh.addQuad(foot[k], foot[next], rim[next], rim[k]);
-    }
+    mesh.addCappedBand(foot, rim, /*bottomCenter=*/-1, topCenter);
     // Lines on the main side in the order of psi = atan2(y, z): the opening's from -asin(r / R)
     // to asin(r / R), then the rest round the bottom.
     struct Line {

@@ -6,6 +6,7 @@ Pure functions of the results JSON written by run.py; report.py places the retur
 markdown at the top of docs/results.md.
 """
 import math
+import statistics
 
 # "Worse" (issue 19): the max error up by more than 2% or the RMS error up by more than 1%,
 # relative to the input's. Errors are floored at FLOOR first (the measurement noise of float
@@ -444,11 +445,6 @@ def gap_closed(case, run, measure):
     return (b - a) / (b - lim)
 
 
-def _median(values):
-    v = sorted(values)
-    return (v[(len(v) - 1) // 2] + v[len(v) // 2]) / 2
-
-
 def limit_table(cases, mult):
     """Issue 60, point 1: per grid family, the default against the information limit (dual
     contouring with exact Hermite data on a grid of the input's cell size): geometric means of
@@ -465,25 +461,28 @@ def limit_table(cases, mult):
         pairs = [(c, _run(c, DEFAULT_METHOD, mult)) for c in cs if "limit" in c
                  and c["model"] not in NO_SHARP_FEATURES]
         pairs = [(c, r) for c, r in pairs if r is not None and r["status"] == "ok"]
-        ambiguous = [p for p in pairs if (narrowest_designed(p[0], mult) or 1e9)
-                     <= AMBIGUOUS_SPACINGS]
-        pairs = [p for p in pairs if p not in ambiguous]
-        if not pairs:
+        clear = []
+        for c, r in pairs:
+            narrowest = narrowest_designed(c, mult)
+            if narrowest is None or narrowest > AMBIGUOUS_SPACINGS:
+                clear.append((c, r))
+        if not clear:
             continue
-        cells = []
+        cells, closed = [], {}
         for measure in ("max", "rms"):
             means = [_gmean([_floored(x[measure]) for x in xs]) for xs in
-                     ([c["before"] for c, _ in pairs], [r["after"] for _, r in pairs],
-                      [c["limit"] for c, _ in pairs])]
-            closed = [g for g in (gap_closed(c, r, measure) for c, r in pairs) if g is not None]
+                     ([c["before"] for c, _ in clear], [r["after"] for _, r in clear],
+                      [c["limit"] for c, _ in clear])]
+            closed[measure] = [(g, c) for g, c in ((gap_closed(c, r, measure), c)
+                                                   for c, r in clear) if g is not None]
+            gaps = [g for g, _ in closed[measure]]
             cells += [" / ".join(f"{m:.3g}" for m in means),
-                      f"{_median(closed):.2f} ({min(closed):.2f}), {len(closed)} inputs"
-                      if closed else "–"]
-        least = sorted((g, c["model"], c["resolution"]) for g, c in
-                       ((gap_closed(c, r, "max"), c) for c, r in pairs) if g is not None)
+                      f"{statistics.median(gaps):.2f} ({min(gaps):.2f}), {len(gaps)} inputs"
+                      if gaps else "–"]
+        least = sorted((g, c["model"], c["resolution"]) for g, c in closed["max"])
         cells.append(", ".join(f"{m} {res} {g:.2f}" for g, m, res in least[:3]) or "–")
-        rows.append(f"| {FAMILY_TITLES.get(kind, kind)} | {len(pairs)} ({len(ambiguous)}) | "
-                    + " | ".join(cells) + " |")
+        rows.append(f"| {FAMILY_TITLES.get(kind, kind)} | {len(clear)} "
+                    f"({len(pairs) - len(clear)}) | " + " | ".join(cells) + " |")
     return "\n".join(rows) if len(rows) > 2 else ""
 
 

@@ -35,6 +35,7 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "python" / "tests"))
 from ply import read_ply  # noqa: E402
+from figure_axes import frame  # noqa: E402
 
 
 def unit(x):
@@ -115,12 +116,7 @@ def draw(ax, tris, values, cell, cmap, centre, half, elev, azim, title):
     colours = cmap(np.clip(values / cell, 0, 1))[:, :3] * lit[:, None]
     ax.add_collection3d(Poly3DCollection(tris, facecolors=colours, edgecolors=(0, 0, 0, 0.25),
                                          linewidths=0.25))
-    for axis, c in zip("xyz", centre):
-        getattr(ax, f"set_{axis}lim")(c - half, c + half)
-    ax.set_box_aspect((1, 1, 1), zoom=1.1)
-    ax.view_init(elev=elev, azim=azim)
-    ax.set_axis_off()
-    ax.set_title(title, fontsize=12)
+    frame(ax, centre, half, 1.1, elev, azim, title, 12)
 
 
 def main():

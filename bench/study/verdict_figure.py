@@ -26,6 +26,7 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "python" / "tests"))
 from ply import read_ply  # noqa: E402
+from figure_axes import frame  # noqa: E402
 
 
 def shaded(mesh, light):
@@ -49,12 +50,7 @@ def draw(ax, mesh, title, elev, azim):
                                          linewidths=0.3))
     lo, hi = v.min(axis=0), v.max(axis=0)
     centre, half = (lo + hi) / 2, (hi - lo).max() / 2
-    for axis, c in zip("xyz", centre):
-        getattr(ax, f"set_{axis}lim")(c - half, c + half)
-    ax.set_box_aspect((1, 1, 1), zoom=1.5)
-    ax.view_init(elev=elev, azim=azim)
-    ax.set_axis_off()
-    ax.set_title(title, fontsize=11)
+    frame(ax, centre, half, 1.5, elev, azim, title, 11)
 
 
 def main():

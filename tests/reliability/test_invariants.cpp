@@ -57,7 +57,7 @@ const char *const kShapes[] = {"cube",           "lblock",           "wedge",  "
 
 std::vector<Case> allCases() {
   std::vector<Case> cases;
-  for (const std::string s : kShapes)
+  for (const char *s : kShapes)
     for (double f : kFractions)
       for (double m : kMultipliers) cases.push_back({s, f, m, int(cases.size())});
   return cases;
