@@ -76,8 +76,9 @@ double maxProjectionStep(const MeshType &m, const std::vector<std::uint32_t> &fa
 /// way and creates no angle below `degenerateAngleRad` that was not there. A
 /// face with two corners at one point before the move and after it
 /// (hasCoincidentCorners: placement put two new vertices of a grid-aligned
-/// edge on one target) faces no way and refuses nothing; the cleanup
-/// collapses it later.
+/// edge on one target) faces no way and refuses nothing; a face that already
+/// had such an angle (v beside two new vertices on the restored line) may
+/// keep one, thinner or not: the cleanup removes both kinds later.
 template <class MeshType>
 bool moveKeepsFaces(const MeshType &m, const std::vector<std::uint32_t> &faces, std::size_t v,
                     const Vec3 &target, double degenerateAngleRad) {
@@ -93,7 +94,7 @@ bool moveKeepsFaces(const MeshType &m, const std::vector<std::uint32_t> &faces, 
     const Vec3 after = (r[1] - r[0]) ^ (r[2] - r[0]);
     const double minBefore = minTriangleAngle(q[0], q[1], q[2]);
     const double minAfter = minTriangleAngle(r[0], r[1], r[2]);
-    if (!(before * after > 0 && (minAfter >= degenerateAngleRad || minAfter >= minBefore)))
+    if (!(before * after > 0 && (minAfter >= degenerateAngleRad || minBefore < degenerateAngleRad)))
       return false;
   }
   return true;
