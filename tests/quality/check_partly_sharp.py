@@ -15,16 +15,13 @@ follows the edge restored into it. Asserted: both inputs made, sharpened and mea
 made worse (families.is_worse: max up > 2% or RMS up > 1%), the RMS error down by at least
 MIN_RMS_FACTORS (measured x62 at 1% and x5.2 at 0.5%; x1.33 and x1.92 with every move of a
 feature already sharp sent back, x1.00 before the rule) and the max by MIN_MAX_FACTORS
-(measured x37 at 1%, where the saddle corners held it, and x1.14 at 0.5%, x1.04 since the
-degenerate-face cleanup takes a vertex back only part of the way: near the saddle corners some
-are held part of the way out where rest lay on the surface; at 0.5% the check asserts a max
-no higher than the input's); the report counts the features left as already sharp, and not
-every feature is left.
+(measured x37 at 1%, where the saddle corners held it, and x1.14 at 0.5%); the report counts the
+features left as already sharp, and not every feature is left.
 """
 import checks  # first: puts bench/quality on sys.path
 
 MIN_RMS_FACTORS = {"1%": 20.0, "0.5%": 4.0}
-MIN_MAX_FACTORS = {"1%": 10.0, "0.5%": 1.0}
+MIN_MAX_FACTORS = {"1%": 10.0, "0.5%": 1.1}
 
 
 def reports_already_sharp(case, run, failures):
