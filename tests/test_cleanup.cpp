@@ -419,22 +419,18 @@ TEST(DegenerateCleanup, FlipsACapInsideASplitFace) {
   t.expectSound();
 }
 
-TEST(DegenerateCleanup, TakesAVertexBackWhenNeitherCollapseNorFlipApplies) {
+TEST(DegenerateCleanup, RevertsAVertexWhenNeitherCollapseNorFlipApplies) {
   // e moved a hair off the middle of a-c: a e c is a cap whose longest edge
-  // a-c borders the unsplit a c d, and not a needle. e goes back only as far
-  // as that cures it: 15/16 of its way out, 0.036 off a-c (an angle of 4
-  // degrees at a), not to rest, where it would leave a notch as deep as its
-  // move.
+  // a-c borders the unsplit a c d, and not a needle.
   SplitTetrahedron t({0});
   const std::size_t e = t.insertedBetween(kA, kB);
   const Vec3 rest = t.plan.inserted[e - t.plan.originalVertexCount].rest;
-  const Vec3 placed = (t.at(kA) + t.at(kC)) / 2 + Vec3(0.005, 0, 0);
-  t.move(e, placed);
+  t.move(e, (t.at(kA) + t.at(kC)) / 2 + Vec3(0.005, 0, 0));
   const es::CleanupStats s = t.cleanUp();
   EXPECT_GE(s.degenerateFound, 1u);
   expectCured(s, 0, 0, 1);
-  EXPECT_EQ(t.labels->placement[e], es::Placement::Moved);
-  EXPECT_LT((t.at(e) - (rest + (placed - rest) * (15.0 / 16))).Norm(), 1e-6);
+  EXPECT_EQ(t.labels->placement[e], es::Placement::DegenerateRevert);
+  EXPECT_EQ(t.m.vert[e].cP(), vcg::Point3f::Construct(rest));
   EXPECT_EQ(liveFaces(t.m), 6u);
   t.expectSound();
 }

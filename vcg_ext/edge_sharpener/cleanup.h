@@ -210,60 +210,17 @@ bool flipCap(typename MeshType::FaceType &f, MeshLabels<MeshType> &labels) {
   return true;
 }
 
-namespace detail {
-
-/// Whether every face around `v` (its star) keeps the orientation it has
-/// with v at `rest` and has no angle below `angleRad` (or none below the one
-/// it has with v at rest) when v lies at `p`. A face with two corners at one
-/// point with v at rest has no orientation to keep and refuses nothing.
-template <class FaceType>
-bool starFineAt(const std::vector<vcg::face::Pos<FaceType>> &star,
-                const typename FaceType::VertexType *v, const Vec3 &p, const Vec3 &rest,
-                double angleRad) {
-  for (const auto &pos : star) {
-    const FaceType *g = pos.F();
-    Vec3 q[3], r[3];
-    for (int j = 0; j < 3; ++j) {
-      q[j] = g->cV(j) == v ? rest : positionOf(g->cV(j));
-      r[j] = g->cV(j) == v ? p : q[j];
-    }
-    if (hasCoincidentCorners(q[0], q[1], q[2])) continue;
-    if (!(triangleNormal(q[0], q[1], q[2]) * triangleNormal(r[0], r[1], r[2]) > 0)) return false;
-    const double atRest = minTriangleAngle(q[0], q[1], q[2]);
-    if (minTriangleAngle(r[0], r[1], r[2]) < std::min(angleRad, atRest)) return false;
-  }
-  return true;
-}
-
-}  // namespace detail
-
-/// Takes the moved inserted vertices of `f` back towards rest, each to the
-/// farthest of 15 points out of 16 along its way there (as the intersection
-/// guard retreats) at which none of its faces is turned over or left with
-/// an angle below `angleRad`, or else to rest: a vertex sent all the way back
-/// from a restored edge leaves a notch as deep as its move.
-/// \return how many were taken back, part of the way or all of it.
+/// Sends the moved inserted vertices of `f` back to rest.
+/// \return how many were sent back.
 template <class MeshType>
 std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
-                                   VertexMoves<MeshType> &moves, double angleRad) {
-  using FaceType = typename MeshType::FaceType;
-  constexpr int kSteps = 16;
+                                   VertexMoves<MeshType> &moves) {
   std::size_t n = 0;
   for (int j = 0; j < 3; ++j) {
     const std::size_t v = vcg::tri::Index(m, f.V(j));
     if (v < moves.firstInserted() || !moves.isMoved(v)) continue;
+    moves.sendBack(v, Placement::DegenerateRevert);
     ++n;
-    std::vector<vcg::face::Pos<FaceType>> star;
-    vcg::face::VFOrderedStarFF(vcg::face::Pos<FaceType>(&f, j, f.V(j)), star);
-    const Vec3 placed = positionOf(f.cV(j)), rest = Vec3::Construct(moves.storedRest(v));
-    bool kept = false;
-    for (int level = kSteps - 1; level > 0 && !kept; --level) {
-      const Vec3 p = rest + (placed - rest) * (double(level) / kSteps);
-      if (!detail::starFineAt(star, f.cV(j), p, rest, angleRad)) continue;
-      m.vert[v].P() = vcg::Point3<typename MeshType::ScalarType>::Construct(p);
-      kept = true;
-    }
-    if (!kept) moves.sendBack(v, Placement::DegenerateRevert);
   }
   return n;
 }
@@ -322,7 +279,7 @@ CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves
         s.removedFaces += std::size_t(removed);
       } else if (detail::isInputSliverAtRest(m, f, moves, angleRad)) {
         continue;
-      } else if (std::size_t n = revertInsertedVertices(m, f, moves, angleRad)) {
+      } else if (std::size_t n = revertInsertedVertices(m, f, moves)) {
         s.reverted += n;
       } else {
         continue;
