@@ -526,7 +526,8 @@ def default_section(results):
               "contouring itself cuts a bevel about a cell wide off (one vertex per cell). One "
               "corner three ways (input, default, limit): "
               "[`images/corner-limit.png`](images/corner-limit.png) "
-              "(`bench/study/corner_figure.py`).", "",
+              "(`bench/study/corner_figure.py`); corners of four or more faces, each sampler "
+              "at 1% and 0.5%: [`corners.md`](corners.md) (`bench/study/corner_table.py`).", "",
               limit_table(hc, mult) or "(no input with a limit in this half)", "",
               f"Where the default misses a gain target ({half} half), input by input: what the "
               "default did (its report) and the input's max error in its own sample spacings "
