@@ -90,12 +90,23 @@ def plane_points(tris, corner, r, h):
     return p[np.linalg.norm(p - corner, axis=1) <= r]
 
 
-def default_corner(ref):
-    """The reference vertex in the most distinct face planes (ties: largest z, y, x)."""
+def planes_at(ref, i):
+    """How many distinct face planes meet at reference vertex i."""
     v, f = ref["vertices"].astype(float), ref["faces"]
-    count = [len(np.unique(np.round(normals(v[f])[(f == i).any(axis=1)], 6), axis=0))
-             for i in range(len(v))]
-    return v[max(range(len(v)), key=lambda i: (count[i], *v[i][::-1]))]
+    return len(np.unique(np.round(normals(v[f[(f == i).any(axis=1)]]), 6), axis=0))
+
+
+def default_corner(ref):
+    """The index of the reference vertex in the most distinct face planes (ties: largest z,
+    y, x)."""
+    v = ref["vertices"].astype(float)
+    return max(range(len(v)), key=lambda i: (planes_at(ref, i), *v[i][::-1]))
+
+
+def triangles_near(ref, corner, reach):
+    """The reference's triangles (m, 3, 3) within `reach` of the point `corner`."""
+    tris = ref["vertices"].astype(float)[ref["faces"]]
+    return np.array([t for t in tris if distance(corner[None], t[None])[0] <= reach])
 
 
 def measure(mesh, ref_tris, ref_points, corner, r, margin):
@@ -141,12 +152,12 @@ def main():
                        check=True, capture_output=True)
         ref = read_ply(tmp / f"{args.shape}_reference.ply")
         meshes = [read_ply(p) for p in (mc, sharp, dc)]
-    rv, rf = ref["vertices"].astype(float), ref["faces"]
+    rv = ref["vertices"].astype(float)
     diagonal = np.linalg.norm(rv.max(axis=0) - rv.min(axis=0))
-    cell, corner = 0.01 * diagonal, default_corner(ref)
+    cell, corner = 0.01 * diagonal, rv[default_corner(ref)]
     corner = np.array([float(x) for x in args.corner.split(",")]) if args.corner else corner
     r, margin = args.radius * cell, 2 * cell
-    ref_tris = np.array([t for t in rv[rf] if distance(corner[None], t[None])[0] <= r + margin])
+    ref_tris = triangles_near(ref, corner, r + margin)
     if len(ref_tris) == 0:
         sys.exit(f"no reference face within {args.radius + 2} cells of {corner}")
     out = unit(np.unique(np.round(normals(ref_tris), 6), axis=0).mean(axis=0))

@@ -24,21 +24,14 @@ import tempfile
 import numpy as np
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from corner_figure import (ROOT, default_corner, distance, measure, normals,  # noqa: E402
-                           plane_points)
+from corner_figure import (ROOT, default_corner, measure, plane_points,  # noqa: E402
+                           planes_at, triangles_near)
 from ply import read_ply  # noqa: E402  (python/tests, on corner_figure's path)
 
 # The sharp shapes; a designed bevel's or fillet's facets would count as planes.
 SHAPES = ["cube", "cross_prism", "cylinder_block", "lblock", "lblock_tilted", "pyramid", "wedge"]
 FAMILIES = [("mc", "own marching cubes"), ("umr", "MeshLab UMR"), ("vdb", "OpenVDB"),
             ("vdbproj", "OpenVDB projected")]
-
-
-def planes_at(ref, corner):
-    v, f = ref["vertices"].astype(float), ref["faces"]
-    at = np.linalg.norm(v - corner, axis=1) < 1e-9
-    touching = np.isin(f, np.flatnonzero(at)).any(axis=1)
-    return len(np.unique(np.round(normals(v[f[touching]]), 6), axis=0))
 
 
 def run(cmd):
@@ -59,16 +52,16 @@ def main():
              "--shapes", *SHAPES])
         for shape in SHAPES:
             ref = read_ply(tmp / f"{shape}_reference.ply")
-            corner = default_corner(ref)
-            if planes_at(ref, corner) < 4:
+            index = default_corner(ref)
+            if planes_at(ref, index) < 4:
                 continue
-            rv, rf = ref["vertices"].astype(float), ref["faces"]
+            rv = ref["vertices"].astype(float)
+            corner = rv[index]
             diagonal = np.linalg.norm(rv.max(axis=0) - rv.min(axis=0))
             for pct in ("1", "0.5"):
                 cell = float(pct) / 100 * diagonal
                 r, margin = args.radius * cell, 2 * cell
-                ref_tris = np.array([t for t in rv[rf]
-                                     if distance(corner[None], t[None])[0] <= r + margin])
+                ref_tris = triangles_near(ref, corner, r + margin)
                 ref_points = plane_points(ref_tris, corner, r, 0.1 * cell)
                 limit = tmp / f"{shape}_dc{pct}.ply"
                 run([build / "test_meshes" / "dual-contour", shape, pct, limit])
