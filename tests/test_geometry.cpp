@@ -3,6 +3,7 @@
 
 #include <random>
 
+#include "edge_sharpener/util/curved_flank.h"
 #include "edge_sharpener/util/geometry.h"
 #include "edge_sharpener/util/qef.h"
 
@@ -528,4 +529,53 @@ TEST(Qef, WeighsItsPlanesAndKeepsTheCentreWhereTheyFixNothing) {
   x = es::solveQef({faces[0], faces[1]}, {}, Vec3(0.3, -0.2, 0.1));
   EXPECT_EQ(x.rank, 2);
   EXPECT_LT((x.point - Vec3(0, -0.2, 0.6)).Norm(), 1e-12);
+}
+
+// A flank fitted as placement fits it (the faces' area-weighted normal and
+// centroid, the scatters of their deviations), here of a cylinder's side
+// next to its flat top: the bent flank meets the top on the rim, a circle,
+// where the fitted plane meets it on a straight line inside.
+TEST(CurvedFlank, MeetsAFlatCapOnACylindersRim) {
+  using es::closestPointOnPlanePairLine;
+  using es::CrossScatter3;
+  using es::CurvedFlank;
+  using es::curvedFlank;
+  using es::onBothFlanks;
+  const double radius = 1.0;
+  std::vector<Vec3> normal, centroid;
+  for (double t = -0.2; t <= 0.2001; t += 0.05)
+    for (double z = -0.3; z <= -0.0499; z += 0.05) {
+      normal.emplace_back(std::cos(t), std::sin(t), 0);
+      centroid.emplace_back(radius * std::cos(t), radius * std::sin(t), z);
+    }
+  Vec3 n(0, 0, 0), c(0, 0, 0);
+  for (std::size_t i = 0; i < normal.size(); ++i) n += normal[i], c += centroid[i];
+  const Plane side{c / double(centroid.size()), n.Normalize()};
+  CrossScatter3 normalPosition, positionScatter;
+  for (std::size_t i = 0; i < normal.size(); ++i) {
+    normalPosition.add(normal[i] - side.normal, centroid[i] - side.point, 1.0 / normal.size());
+    positionScatter.add(centroid[i] - side.point, centroid[i] - side.point, 1.0 / normal.size());
+  }
+  const CurvedFlank bent = curvedFlank(side, normalPosition, positionScatter);
+  EXPECT_NEAR(bent.kuu + bent.kvv, 1.0 / radius, 1e-3);  // one principal curvature: 1/R
+  const CurvedFlank top = curvedFlank({Vec3(0, 0, 0), Vec3(0, 0, 1)}, {}, {});
+  EXPECT_FALSE(top.curved());
+
+  const Vec3 rest(0.97, 0.2, -0.02);
+  const auto onPlanes = closestPointOnPlanePairLine(side, top.plane, rest, 1.0 * M_PI / 180.0);
+  ASSERT_TRUE(onPlanes);
+  const auto radialError = [&](const Vec3 &x) { return std::abs(std::hypot(x[0], x[1]) - radius); };
+  EXPECT_GT(radialError(*onPlanes), 0.01);
+  const auto onFlanks = onBothFlanks(bent, top, *onPlanes, 1e-12);
+  ASSERT_TRUE(onFlanks);
+  EXPECT_NEAR((*onFlanks)[2], 0.0, 1e-12);
+  EXPECT_LT(radialError(*onFlanks), 1e-3);
+  // Two flat flanks meet where their planes do.
+  const CurvedFlank flatSide = curvedFlank(side, {}, {});
+  const auto onFlat = onBothFlanks(flatSide, top, rest, 1e-12);
+  ASSERT_TRUE(onFlat);
+  EXPECT_LT(((*onFlat) - *closestPointOnPlanePairLine(side, top.plane, *onFlat, 0.01)).Norm(),
+            1e-12);
+  // Flanks that never meet: two parallel planes.
+  EXPECT_FALSE(onBothFlanks(top, curvedFlank({Vec3(0, 0, 1), Vec3(0, 0, 1)}, {}, {}), rest, 1e-9));
 }

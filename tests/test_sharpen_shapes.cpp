@@ -52,6 +52,26 @@ std::string topologyProblem(es::Mesh &m) {
   return "";
 }
 
+/// A shape's marching-cubes mesh (cells of `cellFraction` of its diagonal)
+/// sharpened with `opt`: the report, and the distances to the exact shape
+/// before and after.
+struct SharpenedShape {
+  es::SharpenReport report;
+  es::DistanceReport before, after;
+};
+
+SharpenedShape sharpenShape(const std::string &name, double cellFraction,
+                            const es::SharpenOptions &opt) {
+  const shapes::Shape &shape = shapes::shapeByName(name);
+  es::Mesh reference, input, output;
+  shapes::buildReference(shape, reference);
+  shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, cellFraction), input);
+  vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(output, input);
+  vcg::tri::UpdateTopology<es::Mesh>::FaceFace(output);
+  const es::SharpenReport report = es::sharpen(output, opt);
+  return {report, es::measureDistance(input, reference), es::measureDistance(output, reference)};
+}
+
 class SharpenShapes : public ::testing::TestWithParam<Case> {};
 
 }  // namespace
@@ -149,15 +169,7 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 TEST(SharpenShapes, SphereWithoutFeaturesIsEssentiallyUnchanged) {
-  const shapes::Shape &shape = shapes::shapeByName("sphere");
-  es::Mesh reference, input, output;
-  shapes::buildReference(shape, reference);
-  shapes::marchingCubes(shape, shapes::cellSizeForDiagonalFraction(shape, 0.02), input);
-  vcg::tri::Append<es::Mesh, es::Mesh>::MeshCopy(output, input);
-  vcg::tri::UpdateTopology<es::Mesh>::FaceFace(output);
-  const es::SharpenReport r = es::sharpen(output, es::SharpenOptions::paperMethod());
-  const es::DistanceReport before = es::measureDistance(input, reference);
-  const es::DistanceReport after = es::measureDistance(output, reference);
+  const auto [r, before, after] = sharpenShape("sphere", 0.02, es::SharpenOptions::paperMethod());
   std::printf("sphere: chamfer edges %zu, moved %zu | max %.4f%% -> %.4f%%, rms %.5f%% -> %.5f%%\n",
               r.filters.chamferEdges, r.placement.moved(), before.maxPercent(), after.maxPercent(),
               before.rmsPercent(), after.rmsPercent());
@@ -217,6 +229,21 @@ TEST(SharpenShapes, AutoSharpensSaddleCornersThePaperKeepsAtRest) {
   EXPECT_GT(mixed[0], 0u);
   EXPECT_EQ(mixed[1], 0u);
   EXPECT_LT(maxAfter[1], maxAfter[0]);
+}
+
+// Where a flat cap cuts a torus, the torus side is a convex curved flank:
+// the plane fitted to it next to the rim meets the cap's plane beyond the
+// rim, outside the solid. The auto method places the rims' vertices where
+// the flanks meet as curved surfaces, so it restores them no worse than
+// marching cubes left them (between the planes: max 1.43% against 1.04%).
+TEST(SharpenShapes, AutoRestoresACurvedFlanksRimOnItsCurve) {
+  const auto [r, before, after] = sharpenShape("torus_cut", 0.02, es::SharpenOptions{});
+  std::printf("torus_cut at 2%%: moved %zu | max %.4f%% -> %.4f%%, rms %.5f%% -> %.5f%%\n",
+              r.placement.moved(), before.maxPercent(), after.maxPercent(), before.rmsPercent(),
+              after.rmsPercent());
+  EXPECT_GT(r.placement.moved(), 0u);
+  EXPECT_LT(after.max(), before.max());
+  EXPECT_LT(after.rms(), before.rms());
 }
 
 // The report's projections and displacements count only what the output

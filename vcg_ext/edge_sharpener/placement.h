@@ -1,6 +1,8 @@
 // Stage 5: moves each inserted vertex onto the intersection of the planes
 // extrapolated from the adjacent smooth regions (paper, Figures 5 and 6),
-// or keeps it at rest for one of the paper's degenerate cases.
+// or keeps it at rest for one of the paper's degenerate cases; in the
+// extended method, an edge vertex whose flank bends away goes onto the
+// flanks as curved surfaces (detail::onCurvedFlanks).
 #pragma once
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 
 #include "options.h"
 #include "subdivision.h"
+#include "util/curved_flank.h"
 #include "util/statistics.h"
 
 namespace edge_sharpener {
@@ -172,6 +175,38 @@ inline bool flankBendsAway(const InsertedVertexSource &src, const Plane *planes,
     if (extrapolationBend(fit.normalScatter, fit.pointScatter, w / d, d) > allowed) return true;
   }
   return false;
+}
+
+/// An edge vertex whose flank bends away before its target (flankBendsAway
+/// found it, and the move is short enough that this only marks it:
+/// veto::bendOnlyMarks) is moved from between its planes onto the curve
+/// where its two flanks meet as curved surfaces (util/curved_flank.h: each
+/// fit's plane bent by the shape operator its faces' normals show). Planes
+/// extrapolated from a convex curved flank meet beyond its edge: a torus'
+/// rim restored that way lies outside the solid. A flank whose region is a
+/// plane (planarRegionPlanes) stays flat: there the normals follow the
+/// sampler, not the shape. The curved point is taken only as a correction:
+/// no farther from the planes' point than that lies from rest.
+inline void onCurvedFlanks(const InsertedVertexSource &src, const Plane *planes,
+                           const SupportPlanes &support, Vec3 &target) {
+  if (src.originalCount != 2 || !support.measured) return;
+  Vec3 edge = planes[0].normal ^ planes[1].normal;
+  if (!(edge.Norm() > 0)) return;
+  edge /= edge.Norm();
+  CurvedFlank flank[2];
+  for (int i = 0; i < 2; ++i) {
+    const std::size_t s = src.original[i];
+    const SupportFit &fit = support.fit(s);
+    const bool planar = s < support.region.size() &&
+                        regionPlaneOf(support.regionPlanes, support.region[s]) != nullptr;
+    flank[i] = planar ? curvedFlank(planes[i], {}, {})
+                      : curvedFlank(planes[i], fit.normalScatter, fit.pointScatter,
+                                    planes[i].normal ^ edge);
+  }
+  if (!flank[0].curved() && !flank[1].curved()) return;
+  const double spacing = support.sampleSpacing > 0 ? support.sampleSpacing : 1.0;
+  const auto bent = onBothFlanks(flank[0], flank[1], target, 1e-7 * spacing);
+  if (bent && (*bent - target).Norm() <= (target - src.rest).Norm()) target = *bent;
 }
 
 /// At a corner, whether the flanks of any pair of its planes, meeting along
@@ -522,9 +557,11 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
   if (!policy.vetoes || paper != Placement::Moved) return paper;
   const Placement outcome =
       veto::anyAtTarget(src, planes, support, opt, policy, target, bent).value_or(Placement::Moved);
-  if (outcome == Placement::Moved)
+  if (outcome == Placement::Moved) {
+    if (bent) detail::onCurvedFlanks(src, planes, support, target);
     detail::onRegionPlanes(src, support, policy.paper, target,
                            typicalTurns.typicalRad(src, support));
+  }
   return outcome;
 }
 
