@@ -44,6 +44,28 @@ def is_worse(before, after):
             _floored(after["rms"]) > _floored(before["rms"]) * (1 + WORSE_RMS))
 
 
+# A max read with 100,000 samples can lie this far below the true max of a small feature
+# (docs/auto-method-decisions.md, "The maximum read with 100,000 samples moves by up to 12%").
+SAMPLED_MAX_SPREAD = 0.15
+
+
+def may_be_worse(before, after):
+    """Whether an output could be worse than its input once both are read exactly: worse as
+    read, or within the sampled max's spread of the line (either side may under-read)."""
+    spread = {"max": after["max"] * (1 + SAMPLED_MAX_SPREAD),
+              "rms": after["rms"] * (1 + SAMPLED_MAX_SPREAD / 5)}
+    return is_worse(before, after) or is_worse(before, spread)
+
+
+def run_is_worse(case, run):
+    """The worse rule for one run: on its reading with run.DENSE_SAMPLES where it has one
+    (run.py takes it for every default output that may_be_worse), else on the benchmark's."""
+    dense = run.get("dense")
+    if dense:
+        return is_worse(dense["before"], dense["after"])
+    return is_worse(case["before"], run["after"])
+
+
 def _gmean(values):
     values = [v for v in values if v > 0 and math.isfinite(v)]
     return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
@@ -84,7 +106,7 @@ def family_stats(cases, method, mult):
             failed += 1
             continue
         measured += 1
-        if is_worse(c["before"], r["after"]):
+        if run_is_worse(c, r):
             worse += 1
         if c["model"] not in NO_SHARP_FEATURES and c["input"] != "asis":
             fm, fr = _factors(c, r)
@@ -133,7 +155,7 @@ def worse_list(cases, mult, causes):
     for c in cases:
         for method, label in COLUMNS:
             r = _run(c, method, mult)
-            if r is None or r["status"] != "ok" or not is_worse(c["before"], r["after"]):
+            if r is None or r["status"] != "ok" or not run_is_worse(c, r):
                 continue
             rows.append(f"| {c['half']} | {c['input']} {c['resolution']} | {c['model']} | {label} | "
                         f"{before_after(c['before'], r['after'])} | {_cause(c, method, causes)} |")
@@ -244,13 +266,15 @@ def targets_table(cases, mult):
 
 
 def default_worse_list(cases, mult):
-    """The default's worse outputs, each also as measured with run.DENSE_SAMPLES (run.py
-    measures a worse output of the default again, with its input)."""
+    """The default's outputs worse as read with the benchmark's samples or with
+    run.DENSE_SAMPLES (run.py measures every default output near the line again, with its
+    input); the verdict is the dense reading's (run_is_worse)."""
     rows = ["| half | family | model | resolution | max before -> after | RMS before -> after "
             "| with a million samples: max, RMS |", "|---|---|---|---|---|---|---|"]
     for c in cases:
         r = _run(c, DEFAULT_METHOD, mult)
-        if r and r["status"] == "ok" and is_worse(c["before"], r["after"]):
+        if r and r["status"] == "ok" and (is_worse(c["before"], r["after"])
+                                          or run_is_worse(c, r)):
             dense = r.get("dense")
             again = ("not measured" if not dense else
                      before_after(dense["before"], dense["after"]).replace(" | ", ", ")
@@ -397,7 +421,7 @@ def _worse_of(cases, method, mult):
         if r is None or r["status"] != "ok":
             continue
         measured += 1
-        if is_worse(c["before"], r["after"]):
+        if run_is_worse(c, r):
             worse.append(c)
     return worse, measured
 
@@ -502,7 +526,9 @@ def default_section(results):
     for half in ("validation", "tuning"):
         hc = [c for c in cases if c.get("half") == half]
         L += [f"### {half.capitalize()} half", "", targets_table(hc, mult), "",
-              f"Outputs of the default method that came out worse ({half} half):", "",
+              f"Outputs of the default method that came out worse ({half} half; read with "
+              "100,000 samples a side, then, for every output near the line, with a million, "
+              "the reading the worse counts use):", "",
               default_worse_list(sorted(hc, key=lambda c: (c["input"], c["order"], c["model"])),
                                  mult), "",
               f"No harm as it can be met (issue 61, {half} half): the worse count of the default "
@@ -560,7 +586,9 @@ def section(results, causes):
       f"at {FLOOR:g}% of the diagonal) over the references with sharp features (not "
       f"{', '.join(NO_SHARP_FEATURES)}, not *as is*); then **worse** = outputs whose max error "
       f"went up by more than {WORSE_MAX:.0%} or RMS by more than {WORSE_RMS:.0%} (all "
-      "references, every resolution of the family) out of the outputs measured; *failed* = the "
+      "references, every resolution of the family) out of the outputs measured (the default's "
+      "outputs near the line read again with a million samples a side, input and output, and "
+      "judged on that reading); *failed* = the "
       "sharpener refused the input (open or non-manifold scans) or the tool failed (listed "
       "below). Default multiplier "
       f"{mult:g}. *UnSharp Mask (MeshLab)* = MeshLab 2020.09's stock \"UnSharp Mask "

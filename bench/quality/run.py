@@ -27,8 +27,9 @@ and are skipped with a note without it.
   bench/quality/run.py --build BUILD_DIR [--fast] [--models a,b] [--inputs umr,ier] [--jobs N]
                        [--cache DIR] [--refresh] [--distance-samples N]
 
-A worse output of the default method is measured again with DENSE_SAMPLES, with its input
-(the sampled max only under-reads; docs/auto-method-decisions.md, "How exact the sampled max is").
+An output of the default method that is worse or near the line is measured again with
+DENSE_SAMPLES, with its input, and judged on that reading (the sampled max only under-reads;
+docs/auto-method-decisions.md, "How exact the sampled max is").
 """
 import argparse
 import concurrent.futures
@@ -72,9 +73,9 @@ POINT_SAMPLES = 100000
 DISTANCE_SAMPLES = 100000
 _distance_sampling = ["--sampling", "meshlab"]  # --distance-sampling
 _distance_samples = [DISTANCE_SAMPLES]  # --distance-samples
-# A worse output of the default method is measured again with this many samples, with its
-# input: the sampled max is an estimate whose spread at a small feature can exceed the worse
-# rule's 2%.
+# An output of the default method that is worse or near the line (families.may_be_worse) is
+# measured again with this many samples, with its input, and judged on that reading: the
+# sampled max is an estimate whose spread at a small feature can exceed the worse rule's 2%.
 DENSE_SAMPLES = 1000000
 # The peer: MeshLab's stock filter, run on every input (not a variant of our CLI).
 PEER = "unsharp-mask"
@@ -610,7 +611,7 @@ def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cach
     if not measure_run(tools, out, model.reference, timeout, row):
         return row
     if (method == families.DEFAULT_METHOD and mult == DEFAULT_MULTIPLIER
-            and _distance_sampling[1] == "meshlab" and families.is_worse(in_dist, row["after"])):
+            and _distance_sampling[1] == "meshlab" and families.may_be_worse(in_dist, row["after"])):
         row["dense"] = measure_dense(tools, in_path, out, model.reference, timeout)
     if spec.kind == "asis" or model.name in ("sphere", "rocker-arm"):
         # How much the sharpener changed its input (unchanged-ness of smooth meshes).

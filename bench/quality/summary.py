@@ -37,7 +37,7 @@ def main():
                     continue
                 for c in cs:
                     r = families._run(c, method, mult)
-                    if r and r["status"] == "ok" and families.is_worse(c["before"], r["after"]):
+                    if r and r["status"] == "ok" and families.run_is_worse(c, r):
                         print(f"{'':44s}{c['model']} {c['resolution']}: "
                               + families.before_after(c["before"], r["after"]))
 
