@@ -42,13 +42,18 @@ TOLERANCES = (1e-6, 0.05)
 ERROR_FLOOR = 1e-3
 
 
-def region_corners(edge_x, edge_z, leg):
+def region_corners(edge_x, edge_z, leg, finish="bevel"):
     """The cross-section's boundary near the edge: {x <= edge_x, z <= edge_z}, cut by
-    x + z <= edge_x + edge_z - leg when leg > 0, as a polyline from far down the x face,
+    x + z <= edge_x + edge_z - leg (a bevel) or rounded by a quarter circle of radius `leg`
+    tangent to both faces (a fillet) when leg > 0, as a polyline from far down the x face,
     over the edge, to far along the z face."""
     far = 50.0
     if leg <= 0:
         return np.array([[edge_x, edge_z - far], [edge_x, edge_z], [edge_x - far, edge_z]])
+    if finish == "fillet":
+        t = np.linspace(0.0, math.pi / 2, 91)
+        arc = np.stack([edge_x - leg + leg * np.cos(t), edge_z - leg + leg * np.sin(t)], axis=1)
+        return np.concatenate([[[edge_x, edge_z - far]], arc, [[edge_x - far, edge_z]]])
     return np.array([[edge_x, edge_z - far], [edge_x, edge_z - leg], [edge_x - leg, edge_z],
                      [edge_x - far, edge_z]])
 
@@ -66,8 +71,12 @@ def polyline_distance(p, poly):
                   axis=0)
 
 
-def signed_distance(x, z, edge_x, edge_z, leg):
+def signed_distance(x, z, edge_x, edge_z, leg, finish="bevel"):
     """Exact signed distance to the convex cross-section (negative inside)."""
+    if finish == "fillet" and leg > 0:
+        qx, qz = x - (edge_x - leg), z - (edge_z - leg)
+        rounded = np.hypot(np.maximum(qx, 0.0), np.maximum(qz, 0.0))
+        return rounded + np.minimum(np.maximum(qx, qz), 0.0) - leg
     planes = [(np.array([1.0, 0.0]), edge_x), (np.array([0.0, 1.0]), edge_z)]
     if leg > 0:
         s = 1.0 / math.sqrt(2.0)
@@ -78,11 +87,11 @@ def signed_distance(x, z, edge_x, edge_z, leg):
     return np.where(inside <= 0, inside, outside).reshape(x.shape)
 
 
-def contour(edge_x, edge_z, leg, half=6):
+def contour(edge_x, edge_z, leg, finish="bevel", half=6):
     """The marching-squares contour of the cross-section on the unit grid, in grid units."""
     xs = np.arange(-half, half + 1, dtype=float)
     x, z = np.meshgrid(xs, xs, indexing="ij")
-    lines = measure.find_contours(signed_distance(x, z, edge_x, edge_z, leg), 0.0)
+    lines = measure.find_contours(signed_distance(x, z, edge_x, edge_z, leg, finish), 0.0)
     line = max(lines, key=len)
     return line - half  # find_contours returns (row, column) = (x, z) indices
 
@@ -113,10 +122,15 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--phases", default="0.1,0.3,0.5,0.7,0.9",
                     help="where the edge falls in its cell, in x and in z (fractions of a cell)")
+    ap.add_argument("--finish", choices=("bevel", "fillet"), default="bevel",
+                    help="the designed feature: a 45-degree bevel (its leg) or a fillet turning "
+                         "the right angle (its radius); its width is leg x sqrt 2 either way")
     args = ap.parse_args()
+    finish = args.finish
     phases = [float(p) for p in args.phases.split(",")]
-    legs = np.round(np.arange(0.05, 3.0001, 0.05), 2)
-    print("| edge phase x, z | tolerance, cells | widest bevel: leg / width, cells "
+    legs = np.round(np.arange(0.05, 3.0001 if finish == "bevel" else 5.0001, 0.05), 2)
+    print(f"| edge phase x, z | tolerance, cells | widest {finish}: "
+          f"{'leg' if finish == 'bevel' else 'radius'} / width, cells "
           "| marching cubes apart, cells | true shapes apart (bevel's depth), cells "
           "| input's max error against the sharp shape / the bevelled one, cells "
           "| best gain on the sharp shape without harm to the bevelled one |")
@@ -127,14 +141,15 @@ def main():
             sharp_mc = contour(px, pz, 0.0)
             sharp = region_corners(px, pz, 0.0)
             against_sharp = hausdorff(sharp_mc, sharp, px, pz)
-            seen = {leg: hausdorff(sharp_mc, contour(px, pz, leg), px, pz) for leg in legs}
+            seen = {leg: hausdorff(sharp_mc, contour(px, pz, leg, finish), px, pz)
+                    for leg in legs}
             for tolerance in TOLERANCES:
                 alike = [leg for leg in legs if seen[leg] <= tolerance]
                 if not alike:
                     print(f"| {px:g}, {pz:g} | {tolerance:g} | none | | | | |")
                     continue
                 leg = max(alike)
-                bevelled = region_corners(px, pz, leg)
+                bevelled = region_corners(px, pz, leg, finish)
                 depth = hausdorff(sharp, bevelled, px, pz)
                 against_bevel = hausdorff(sharp_mc, bevelled, px, pz)
                 allowed = (1 + WORSE_MAX) * against_bevel
@@ -150,12 +165,13 @@ def main():
         worse = [after / max(before, ERROR_FLOOR) for before, after, _ in harmed]
         ceilings = sorted(c for _, _, c in harmed)
         print(f"\nMeshes within {tolerance:g} cells: over {len(rows)} places of the edge, the "
-              f"widest bevel is {widths[0]:.2f}-{widths[-1]:.2f} cells wide (median "
+              f"widest {finish} is {widths[0]:.2f}-{widths[-1]:.2f} cells wide (median "
               f"{widths[len(widths) // 2]:.2f}); restoring the edge raises the bevelled shape's "
-              f"max error at {len(worse)} of them (by x{min(worse):.2f} to x{max(worse):.2f}); "
-              f"there, without that harm, the sharp shape's max error falls at best by "
-              f"x{ceilings[0]:.2f} to x{ceilings[-1]:.2f} (median "
-              f"x{ceilings[len(ceilings) // 2]:.2f}).")
+              f"max error at {len(worse)} of them"
+              + (f" (by x{min(worse):.2f} to x{max(worse):.2f})" if worse else "") + "; "
+              + (f"there, without that harm, the sharp shape's max error falls at best by "
+                 f"x{ceilings[0]:.2f} to x{ceilings[-1]:.2f} (median "
+                 f"x{ceilings[len(ceilings) // 2]:.2f})." if ceilings else ""))
 
 
 if __name__ == "__main__":
