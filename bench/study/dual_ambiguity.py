@@ -50,17 +50,19 @@ def dual_segments(edge_x, edge_z, radius, cast=False, half=6):
         shape = bevel.densify(bevel.region_corners(edge_x, edge_z, radius, "fillet"), 0.002)
         for k, v in vertex.items():
             vertex[k] = shape[np.argmin(np.linalg.norm(shape - v, axis=1))]
+    # Each crossed grid edge joins the two cells it bounds: an edge along x from node (i, j)
+    # bounds cells (i, j - 1) and (i, j); one along z, cells (i - 1, j) and (i, j).
     segments = []
     for i in range(n):
         for j in range(n):
+            crossed = []
             if i + 1 < n and (f[i, j] < 0) != (f[i + 1, j] < 0):
-                cells = ((i, j - 1), (i, j))
-            elif j + 1 < n and (f[i, j] < 0) != (f[i, j + 1] < 0):
-                cells = ((i - 1, j), (i, j))
-            else:
-                continue
-            if cells[0] in vertex and cells[1] in vertex:
-                segments.append((vertex[cells[0]], vertex[cells[1]]))
+                crossed.append(((i, j - 1), (i, j)))
+            if j + 1 < n and (f[i, j] < 0) != (f[i, j + 1] < 0):
+                crossed.append(((i - 1, j), (i, j)))
+            for a, b in crossed:
+                if a in vertex and b in vertex:
+                    segments.append((vertex[a], vertex[b]))
     return segments
 
 
