@@ -54,14 +54,15 @@ NOTES = """What it found (diagnosed by hand):
   simplify_quadric_decimation, tried on scikit-image's marching cubes at 0.5%, left 16 of 20
   so. The benchmark's UMR failed on five references at 0.5% (meshlabserver out of memory or
   its retIP assertion), which have no input here.
-- plate_holes at 1% (refused before): 7 features restored, 32 left; the RMS rises 6%
-  (0.133% -> 0.141%, the max is the reference's own, unchanged). 330 of the 720 new vertices
-  lie more than 0.27 spacings off the reference, all along the plate's bottom rim, where the
-  input lies within 0.08: that rim is a designed fillet of radius 6.35 (1.7 sample spacings,
-  faceted in three in the reference), which the sharpener took for a chamfer. On the same UMR
-  mesh before decimation every feature there is left (`off_its_planes`, `shallow_angle`):
-  the decimation's long triangles hide the fillet's curvature from those tests. A designed
-  feature within the ambiguous width (issue 61, point 4).
+- plate_holes at 1% (refused before): 7 features restored, 32 left; the RMS rises 4-6%
+  (the max is the reference's own, unchanged). 330 of the 720 new vertices lie more than
+  0.27 spacings off the reference, all along the plate's bottom rim, where the input lies
+  within 0.08: that rim is a designed fillet of radius 6.35 (8.98 across: 2.4 of this mesh's
+  sample spacings; faceted in three in the reference), which the sharpener took for a
+  chamfer. On the same UMR mesh before decimation every feature there is left
+  (`off_its_planes`, `shallow_angle`): the decimation's long triangles hide the fillet's
+  curvature from those tests. Wider than the ambiguous width (1.5 spacings): harm the
+  default must not do (issue 61, point 4's first part), not yet fixed.
 - finished_hexprism at 0.5% decimated to a quarter read 0.307% -> 0.704% when this check was
   first run: its edges between a cap and a side run into fillets of the prism's outline, and
   where the fillet starts the planes fitted next to the feature turn 26 degrees from the
@@ -74,8 +75,11 @@ NOTES = """What it found (diagnosed by hand):
 - octa-flower17k at 0.5% decimated (0.611% -> 0.925%): the petals' outer tips (x or y near
   +-17.5), edges whose flanks meet at 38-64 degrees, moved 1.4-1.6 spacings past the tip the
   decimated chamfer rounds, as with Open3D's Poisson (`docs/heldout.md`). abc6 at 0.5%
-  (0.193% -> 0.351%): not diagnosed here; its designed conical chamfers make it worse in the
-  benchmark and in every other held-out check.
+  (0.193% -> 0.351%): its worst vertices (0.35% of the diagonal off the reference) lie on the
+  top's edges along the walls, restored to where the top's and a wall's planes meet, where the
+  designed 45-degree conical chamfer between them is about 4e-5 high (0.8 of this mesh's
+  sample spacings across); the chamfer tapers to 3e-6 (0.06 spacings) elsewhere: a designed
+  feature within the ambiguous width, where the user's selection decides (issue 61).
 """
 
 
