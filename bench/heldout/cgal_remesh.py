@@ -99,6 +99,14 @@ NOTES = """What it found (diagnosed by hand, 2026-11-29, first run at 9d606fa):
   7_8ths_cube 7.27% -> 0.289% gain at their concave edges.
 - So on an alpha wrap the default gains where the wrap cut concave edges and harms where it
   kept designed blends; the README says so.
+- Rerun 2026-12-04 with the worse count split as the benchmark's (a million samples near the
+  line; a designed feature within the ambiguous width counted apart), four generated shapes
+  with curved sharp edges added since: alpha 1%, 9 of 24 worse with no designed feature that
+  narrow (cone_cut, cube, cylinder_cut, octa-flower17k, plate_holes, pyramid, torus_cut, tube,
+  wedge; the curved-edge shapes cone_cut, cylinder_cut and torus_cut not diagnosed) and 3 within
+  (abc6, bevelled_block, finished_hexprism); alpha 5%, 5 and 4. Isotropic remeshing: 1%
+  plate_holes and torus_cut (first part), bevelled_block within (1.2 spacings); 0.5%
+  octa-flower17k, with ADIS16480 within.
 """
 
 
