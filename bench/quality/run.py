@@ -636,12 +636,15 @@ def measure_limit(tools, model, spec, cache, timeout):
     out = os.path.join(cache, "limit", f"{model.name}__{percent}pct.ply")
     if not os.path.exists(out):
         os.makedirs(os.path.dirname(out), exist_ok=True)
-        made = subprocess.run([tools.dual, model.name, percent, out + ".tmp"],
+        # Two inputs on one grid (UMR and marching cubes at 1%) may make it at once: each
+        # writes its own file, and either replace leaves the same mesh.
+        tmp = f"{out}.{threading.get_ident()}.tmp"
+        made = subprocess.run([tools.dual, model.name, percent, tmp],
                               capture_output=True, text=True, timeout=timeout)
         if made.returncode != 0:
             log(f"{model.name}__{spec.key}: dual-contour failed: {made.stderr.strip()}")
             return None
-        os.replace(out + ".tmp", out)
+        os.replace(tmp, out)
     d, err = measure(tools, out, model.reference, timeout, keep=True)
     if d is None:
         log(f"{model.name}__{spec.key}: the limit is not measurable: {err}")
