@@ -88,14 +88,10 @@ def narrowest_designed(generator, name, mesh, spacing):
             subprocess.run([generator, work, "--designed-faces", mesh, "--shapes", name],
                            check=True, stdout=subprocess.DEVNULL)
             stem = os.path.splitext(os.path.basename(mesh))[0]
-            with open(os.path.join(work, stem + "_designed.txt")) as f:
-                widths = [float(w[3]) for w in (line.split() for line in f)
-                          if len(w) == 5 and w[0] == "#" and w[4] == "wide"]
+            features = quality_run.read_designed_faces(os.path.join(work, stem + "_designed.txt"))
     else:
-        with open(quality_run.DESIGNED_FILE) as f:
-            designed = json.load(f)["references"].get(name) or {}
-        widths = [f["width"] for f in designed.get("features", [])]
-    return min(widths) / spacing if widths else None
+        features = quality_run.designed_features(name)
+    return min(f["width"] for f in features) / spacing if features else None
 
 
 class Table:

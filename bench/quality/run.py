@@ -561,26 +561,33 @@ def designed_mask(tools, model, in_path, cache, timeout):
     path = os.path.join(masks, stem + "_designed.txt")
     subprocess.run([tools.generator, masks, "--designed-faces", in_path, "--shapes", model.name],
                    check=True, stdout=subprocess.DEVNULL, timeout=timeout)
+    return path, read_designed_faces(path)
+
+
+def read_designed_faces(path):
+    """The features (kind, size, width across) a designed-face list of generate-test-meshes
+    --designed-faces names in its header lines ("# bevel 0.05: 0.05 wide")."""
     features = []
     with open(path) as f:
         for line in f:
-            words = line.split()  # "# bevel 0.05: 0.05 wide"
+            words = line.split()
             if len(words) == 5 and words[0] == "#" and words[4] == "wide":
                 features.append({"kind": words[1], "size": float(words[2].rstrip(":")),
                                  "width": float(words[3])})
-    return path, features
+    return features
 
 
 _designed = None
 
 
-def designed_features(model):
-    """The designed features of a reference that is not a generated shape (designed.json)."""
+def designed_features(name):
+    """The designed features of reference `name` when it is not a generated shape
+    (designed.json)."""
     global _designed
     if _designed is None:
         with open(DESIGNED_FILE) as f:
             _designed = json.load(f)["references"]
-    return _designed.get(model.name, {}).get("features", [])
+    return _designed.get(name, {}).get("features", [])
 
 
 def sharpen_and_measure(tools, model, spec, in_path, in_dist, method, mult, cache, timeout,
@@ -673,7 +680,7 @@ def run_case(tools, model, spec, in_path, info, cache, multipliers, timeout, pee
                                                     cache, timeout))
     mask, case["designed"] = designed_mask(tools, model, in_path, cache, timeout)
     if mask is None:
-        case["designed"] = designed_features(model)
+        case["designed"] = designed_features(model.name)
     elif "auto" in VARIANTS:
         case["runs"].append(sharpen_and_measure(tools, model, spec, in_path, d, SELECTION_VARIANT,
                                                 DEFAULT_MULTIPLIER, cache, timeout, mask))
@@ -747,7 +754,7 @@ def main():
         # read afresh, so that an entry added since the run splits its worse count.
         for case in results["cases"]:
             if case.get("group") != "generated":
-                case["designed"] = designed_features(Model(case["model"], None, None, None))
+                case["designed"] = designed_features(case["model"])
         report.write(results, tools, cache, args.docs)
         return
 
