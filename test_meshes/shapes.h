@@ -295,6 +295,52 @@ inline Shape pyramid() {
       side * side * h / 3, side * side + 2 * side * slantHeight);
 }
 
+/// Regular octahedron of circumradius 0.8: six corners where four convex edges meet.
+inline Shape octahedron() {
+  const double a = 0.8;
+  TriangleList mesh;
+  const int px = mesh.addVertex(Point3d(a, 0, 0)), nx = mesh.addVertex(Point3d(-a, 0, 0));
+  const int py = mesh.addVertex(Point3d(0, a, 0)), ny = mesh.addVertex(Point3d(0, -a, 0));
+  const int pz = mesh.addVertex(Point3d(0, 0, a)), nz = mesh.addVertex(Point3d(0, 0, -a));
+  for (const int x : {px, nx})
+    for (const int y : {py, ny})
+      for (const int z : {pz, nz}) {
+        // Outward when (x, y, z) is counter-clockwise seen from outside: an even number of
+        // negative axes among the three.
+        const bool even = ((x == nx) + (y == ny) + (z == nz)) % 2 == 0;
+        if (even)
+          mesh.addTriangle(x, y, z);
+        else
+          mesh.addTriangle(x, z, y);
+      }
+  return convexPolyhedronShape(
+      "octahedron", "regular octahedron, circumradius 0.8: six corners where four convex edges meet",
+      mesh, 4.0 / 3.0 * a * a * a, 4 * std::sqrt(3.0) * a * a);
+}
+
+/// Pyramid on a regular hexagon of circumradius 0.8, height 1.1: an apex where six convex
+/// edges meet (their faces 50 degrees apart), six corners of three around the base.
+inline Shape hexagonalPyramid() {
+  const double r = 0.8, baseZ = -0.5, apexZ = 0.6;
+  TriangleList mesh;
+  std::vector<int> rim;
+  for (int i = 0; i < 6; ++i)
+    rim.push_back(mesh.addVertex(
+        Point3d(r * std::cos(M_PI / 3 * i), r * std::sin(M_PI / 3 * i), baseZ)));
+  const int apex = mesh.addVertex(Point3d(0, 0, apexZ));
+  const int centre = mesh.addVertex(Point3d(0, 0, baseZ));
+  for (int i = 0; i < 6; ++i) {
+    mesh.addTriangle(rim[i], rim[(i + 1) % 6], apex);
+    mesh.addTriangle(rim[(i + 1) % 6], rim[i], centre);
+  }
+  const double h = apexZ - baseZ, apothem = r * std::sqrt(3.0) / 2;
+  const double baseArea = 3 * std::sqrt(3.0) / 2 * r * r;
+  return convexPolyhedronShape("hexagonal_pyramid",
+                               "pyramid on a regular hexagon (circumradius 0.8), height 1.1: an "
+                               "apex where six convex edges meet",
+                               mesh, baseArea * h / 3, baseArea + 3 * r * std::hypot(h, apothem));
+}
+
 /// Box [-a,a]^2 x [-c,0] with a cylinder of radius R, height H standing on its top face.
 inline Shape cylinderBlock() {
   const double a = 0.8, c = 0.5, R = 0.45, H = 0.5;
@@ -1201,6 +1247,10 @@ inline const std::vector<Shape>& allShapes() {
     list.push_back(rotated(detail::torusCut(), torus.axis, torus.angle, "torus_cut"));
     const detail::TeeCylinders &tee = detail::twoCylindersParameters();
     list.push_back(rotated(detail::twoCylinders(), tee.axis, tee.angle, "two_cylinders"));
+    // Corners of more than three faces (issue 60), turned off the grid.
+    list.push_back(rotated(detail::octahedron(), Point3d(2, 1, 3), 0.5, "octahedron"));
+    list.push_back(
+        rotated(detail::hexagonalPyramid(), Point3d(3, 1, 2), 0.4, "hexagonal_pyramid"));
     return list;
   }();
   return shapes;

@@ -68,7 +68,8 @@ SWEEP = (1.5, 2.0, 2.5, 3.0)
 # were measured on: the curved-edge shapes of issue 60 run in the full benchmark only.
 FAST_SHAPES = ("cube", "lblock", "lblock_tilted", "wedge", "pyramid", "cross_prism",
                "cylinder_block", "sphere", "bevelled_block", "finished_hexprism")
-GENERATED_SHAPES = FAST_SHAPES + ("cylinder_cut", "cone_cut", "torus_cut", "two_cylinders")
+GENERATED_SHAPES = FAST_SHAPES + ("cylinder_cut", "cone_cut", "torus_cut", "two_cylinders",
+                                   "octahedron", "hexagonal_pyramid")
 POINT_SAMPLES = 100000
 # mesh-distance in MeshLab's sampling mode: this many vertex, edge and face samples per side.
 DISTANCE_SAMPLES = 100000
