@@ -68,6 +68,10 @@
 #                               new vertices sharing one target no longer keep the remesher's
 #                               middle row off both faces; max factors against floors, none
 #                               made worse (skipped without OpenVDB).
+#   quality.corner_patch        pyramid and octahedron by OpenVDB at 1% and 0.5%: a corner of
+#                               four faces whose chamfer holds an edge between opposite faces is
+#                               placed whole at its planes' point; max factors against floors,
+#                               none made worse (skipped without OpenVDB).
 # The full benchmark (docs/results.md) is scripts/bench-quality.sh, not a test.
 # All exit 77 (skipped) when MeshLab or python3 is not installed, fandisk_targets and
 # long_move also without ../shared. Run: ctest -L quality
@@ -76,5 +80,5 @@ edge_sharpener_meshlab_script_tests(quality
   fandisk_targets 900  cad_as_is 600  thin_wall 600  smooth_planes 600  on_plane 600
   long_move 600  saddle_corners 600  mostly_on_planes 600  bend_with_feature 600
   region_planes 600  rough_planes 600  raised_features 600  exact_sampling 600
-  partly_sharp 600  corner_cells 600  coincident_corners 600
+  partly_sharp 600  corner_cells 600  coincident_corners 600  corner_patch 600
   ENVIRONMENT "ES_BUILD_DIR=${CMAKE_BINARY_DIR}")

@@ -411,6 +411,37 @@ TEST(FeatureEvidence, AWeakEdgeTakesItsCornerButNotTheOtherEdge) {
   EXPECT_EQ(verdict[b], es::Verdict::Restored);
 }
 
+// An edge whose planes meet across its chamfer takes its corner with it,
+// unless it is joined to that corner as one patch (EvidenceGuard's corner
+// patches: the planes of both fix one point), where it is judged with it.
+TEST(FeatureEvidence, AnEdgeJoinedToItsCornerIsJudgedWithIt) {
+  TwoStripsAndACorner t;
+  std::vector<es::Feature> features;
+  const auto featureOf = t.groupAllMoved(features);
+  const std::uint32_t a = featureOf[0], b = featureOf[4], corner = featureOf[7];
+  features[a].lineChamferAngleRad = 80.0 * M_PI / 180.0;
+  es::SharpenOptions opt;
+  auto verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt);
+  EXPECT_EQ(verdict[a], es::Verdict::LineAcrossChamfer);
+  EXPECT_EQ(verdict[corner], es::Verdict::CornerOfWeakEdge);
+
+  std::vector<char> patch(features.size(), 0);
+  patch[a] = 1;
+  verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt,
+                                /*exactSampling=*/false, /*held=*/{}, patch);
+  EXPECT_EQ(verdict[a], es::Verdict::Restored);
+  EXPECT_EQ(verdict[corner], es::Verdict::Restored);
+  EXPECT_EQ(verdict[b], es::Verdict::Restored);
+
+  // A patch does not excuse another rule: an edge off its planes stays left.
+  features[a].maxOffPlane = features[a].offPlaneQ90 = features[a].offPlaneMedian = 1.0;
+  features[a].lineChamferAngleRad = 0;
+  verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt,
+                                /*exactSampling=*/false, /*held=*/{}, patch);
+  EXPECT_EQ(verdict[a], es::Verdict::OffItsPlanes);
+  EXPECT_EQ(verdict[corner], es::Verdict::CornerOfWeakEdge);
+}
+
 TEST(FeatureEvidence, TooManyRefusalsLeaveTheWholeMesh) {
   TwoStripsAndACorner t;
   std::vector<es::Feature> features;

@@ -117,6 +117,24 @@ class AutoMethod {
   GuardStats runGuards(VertexMoves<MeshType> &moves, MeshLabels<MeshType> &labels,
                        double longestInputEdge) {
     const ElementSnapshot<MeshType> beforeGuards(m_, labels);
+    GuardStats guards = cleanUp(moves, longestInputEdge);
+    // A corner placed whole that the guards could not keep whole is given up,
+    // and they run again without it.
+    if (guard_->cornerPatchRefused()) {
+      beforeGuards.restore(m_, labels);
+      guard_->leaveRefusedCornerPatches(stats_);
+      guards = cleanUp(moves, longestInputEdge);
+    }
+    if (guard_->leaveMeshIfGuardsRefused(beforeGuards, stats_)) {
+      guards.cleanup = {};
+      guards.intersections = {};
+    }
+    return guards;
+  }
+
+  /// The degenerate cleanup (where vertices moved), the planar folds and the
+  /// intersection guard, once.
+  GuardStats cleanUp(VertexMoves<MeshType> &moves, double longestInputEdge) {
     GuardStats guards;
     guards.cleanup = removeDegenerateTriangles(m_, moves, opt_.degenerateAngleRad,
                                                /*onlyWhereMoved=*/true);
@@ -125,10 +143,6 @@ class AutoMethod {
         VertexRules::kFoldPlaneSpacings * spacingUnit(zones_.support), opt_.degenerateAngleRad);
     guards.intersections = revertSelfIntersections(m_, moves, opt_.degenerateAngleRad,
                                                    longestInputEdge, &guard_->retreatFirst());
-    if (guard_->leaveMeshIfGuardsRefused(beforeGuards, stats_)) {
-      guards.cleanup = {};
-      guards.intersections = {};
-    }
     return guards;
   }
 

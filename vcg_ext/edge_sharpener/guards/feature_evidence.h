@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 #include <vector>
 // (vcglib's algorithm headers, included below, need complex.h first)
 
@@ -35,6 +36,7 @@
 #include "../report.h"
 #include "../subdivision.h"
 #include "../util/non_manifold.h"
+#include "../util/qef.h"
 #include "../util/statistics.h"
 #include "../util/vertex_faces.h"
 #include "box_hash_grid.h"
@@ -589,7 +591,9 @@ inline std::size_t featuresCutBySelection(const std::vector<char> &outside,
 /// non-manifold spot), AtNonManifoldSpot (restoring it would bend that face);
 /// a feature all of whose new vertices lie on faces outside the user's
 /// selection (verticesOutsideSelection), OutsideSelection;
-/// and, on a mesh sampled exactly and mostly
+/// an edge whose planes meet across its chamfer (LineAcrossChamfer) but that
+/// `cornerPatch` joins to the corners beside it (EvidenceGuard::
+/// findCornerPatches), judged with them; and, on a mesh sampled exactly and mostly
 /// sharp already, a feature whose own moves slide along it, AlreadySharp
 /// (Feature::medianLift; its moves that lift are judged one by one,
 /// EvidenceGuard::keptMoves).
@@ -598,12 +602,16 @@ inline std::vector<Verdict> featureVerdicts(const SplitPlan &plan,
                                             const std::vector<std::uint32_t> &featureOf,
                                             double lift, const SurfaceMeasures &surface,
                                             const SharpenOptions &opt, bool exactSampling = false,
-                                            const HeldFaces &held = {}) {
+                                            const HeldFaces &held = {},
+                                            const std::vector<char> &cornerPatch = {}) {
   if (meshEvidenceIsWeak(refusedFraction(features), lift, surface, opt, exactSampling))
     return std::vector<Verdict>(features.size(), Verdict::MeshEvidenceWeak);
   std::vector<Verdict> verdict(features.size());
-  for (std::size_t c = 0; c < features.size(); ++c)
+  for (std::size_t c = 0; c < features.size(); ++c) {
     verdict[c] = judgeFeature(features[c], opt, exactSampling);
+    if (c < cornerPatch.size() && cornerPatch[c] && verdict[c] == Verdict::LineAcrossChamfer)
+      verdict[c] = Verdict::Restored;
+  }
   for (std::size_t k = 0; k < plan.inserted.size() && !held.empty(); ++k)
     for (int i = 0; i < plan.inserted[k].originalCount; ++i)
       if (held.pins(plan.inserted[k].original[i]))
@@ -723,8 +731,13 @@ class EvidenceGuard {
     if (!stats.wholeMeshLeft)
       countSheetCrossings(m_, moves_, support_, out.lifts, featureOf_, longestInputEdge_,
                           features_);
+    findCornerPatches();
     out.verdicts = featureVerdicts(moves_.plan(), features_, featureOf_, stats.medianLift, surface_,
-                                   opt_, exactSampling_, held_);
+                                   opt_, exactSampling_, held_, cornerPatch_);
+    // An edge joined to corners stands or falls with them.
+    for (const CornerPatch &patch : patches_)
+      if (patch.edge != CornerPatch::kNoEdge && !patchRestored(patch, out.verdicts))
+        out.verdicts[patch.edge] = Verdict::LineAcrossChamfer;
     stats.verdicts = countVerdicts(out.verdicts);
     stats.cutBySelection = featuresCutBySelection(outsideSelection_, featureOf_, features_.size());
     for (std::size_t c = 0; c < features_.size(); ++c) {
@@ -752,22 +765,11 @@ class EvidenceGuard {
     verdicts_ = judged.verdicts;
     EvidenceStats stats = judged.stats;
     const SplitPlan &plan = moves_.plan();
+    placeCornerPatches(judged.verdicts);
     const std::vector<char> kept = keptMoves(judged);
     const std::size_t first = moves_.firstInserted();
-    for (std::size_t k = 0; k < plan.inserted.size(); ++k) {
-      if (m_.vert[first + k].IsD() || kept[k]) continue;
-      if (moves_.isMoved(first + k)) {
-        moves_.sendBack(first + k, Placement::WeakEvidence);
-        ++stats.reverted;
-      }
-      for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
-        const std::size_t v = plan.inserted[k].original[i];
-        if (!m_.vert[v].IsD() && moves_.isMoved(v)) {
-          moves_.sendBack(v, Placement::Original);
-          ++stats.zoneReverted;
-        }
-      }
-    }
+    for (std::size_t k = 0; k < plan.inserted.size(); ++k)
+      if (!m_.vert[first + k].IsD() && !kept[k]) sendBackWithSources(k, stats);
     return stats;
   }
 
@@ -909,6 +911,265 @@ class EvidenceGuard {
   const std::vector<std::uint32_t> &featureOf() const { return featureOf_; }
 
  private:
+  /// One corner where three or more regions meet, placed whole: a corner
+  /// feature, and the edge whose flanks' planes meet across its chamfer beside
+  /// it when there is one (not an edge but part of the corner: a pyramid's
+  /// two opposite faces touch only at its apex). All its new vertices go to
+  /// the one point all their sources' planes determine.
+  struct CornerPatch {
+    static constexpr std::uint32_t kNoEdge = ~std::uint32_t(0);
+    std::uint32_t edge = kNoEdge;
+    std::vector<std::uint32_t> corners;
+    Vec3 point{0, 0, 0};
+    /// A corner alone: the new vertices placement moved, which it places.
+    std::vector<std::uint32_t> lone;
+    std::vector<std::uint32_t> members;  ///< inserted vertices placed there (placeCornerPatches)
+    std::vector<Vec3> before;            ///< ...and where placement had put them
+    std::vector<Placement> placedBefore;
+    bool refused = false;  ///< cornerPatchRefused found the cleanup refused it
+  };
+
+  /// The point the planes of the regions of the sources of `members`
+  /// (inserted vertices) determine, when they fix one: the QEF of dual contouring with rank three
+  /// (util/qef.h), every plane passing within FeatureRules::
+  /// maxFeatureOffPlaneSpacings of it, and within ExtendedSettings::
+  /// maxDisplacementSpacings of every member's rest.
+  std::optional<Vec3> cornerPoint(const std::vector<std::uint32_t> &members) const {
+    const SplitPlan &plan = moves_.plan();
+    Vec3 center(0, 0, 0);
+    std::vector<std::uint32_t> sources;
+    for (const std::uint32_t k : members) {
+      center += plan.inserted[k].rest;
+      for (int i = 0; i < plan.inserted[k].originalCount; ++i)
+        sources.push_back(plan.inserted[k].original[i]);
+    }
+    center /= double(members.size());
+    std::sort(sources.begin(), sources.end());
+    sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
+    // Each region weighs alike: its own plane where it is one, else the
+    // planes fitted at its sources, shared out.
+    std::vector<Plane> planes;
+    std::vector<double> weights;
+    std::vector<long> regions;
+    const auto regionOf = [&](std::uint32_t v) -> long {
+      return v < support_.region.size() ? support_.region[v] : -1;
+    };
+    for (const std::uint32_t v : sources)
+      if (regionOf(v) >= 0) regions.push_back(regionOf(v));
+    std::sort(regions.begin(), regions.end());
+    regions.erase(std::unique(regions.begin(), regions.end()), regions.end());
+    for (const long r : regions) {
+      const bool own = std::size_t(r) < support_.regionPlanes.size() &&
+                       support_.regionPlanes[r].normal.SquaredNorm() > 0;
+      if (own) {
+        planes.push_back(support_.regionPlanes[r]);
+        weights.push_back(1.0);
+        continue;
+      }
+      const std::size_t first = planes.size();
+      for (const std::uint32_t v : sources)
+        if (regionOf(v) == r && support_.plane(v).normal.SquaredNorm() > 0)
+          planes.push_back(support_.plane(v));
+      for (std::size_t i = first; i < planes.size(); ++i)
+        weights.push_back(1.0 / double(planes.size() - first));
+    }
+    if (regions.size() < 3 || planes.empty()) return std::nullopt;
+    const QefSolution corner = solveQef(planes, weights, center);
+    if (corner.rank != 3) return std::nullopt;
+    const double unit = spacingUnit(support_);
+    for (const Plane &pl : planes)
+      if (std::abs(pl.normal * (corner.point - pl.point)) >
+          opt_.rules.feature.maxFeatureOffPlaneSpacings * unit)
+        return std::nullopt;
+    for (const std::uint32_t k : members)
+      if ((corner.point - plan.inserted[k].rest).Norm() >
+          opt_.extended.maxDisplacementSpacings * unit)
+        return std::nullopt;
+    return corner.point;
+  }
+
+  /// Finds the corner patches (CornerPatch): every edge feature judged
+  /// LineAcrossChamfer on its own that shares sources with corner features
+  /// restored on their own, and every other such corner feature, where their
+  /// planes fix a point (cornerPoint).
+  void findCornerPatches() {
+    patches_.clear();
+    cornerPatch_.assign(features_.size(), 0);
+    const SplitPlan &plan = moves_.plan();
+    verticesOf_.assign(features_.size(), {});
+    for (std::size_t k = 0; k < plan.inserted.size(); ++k)
+      if (!m_.vert[moves_.firstInserted() + k].IsD())
+        verticesOf_[featureOf_[k]].push_back(std::uint32_t(k));
+    std::vector<std::vector<std::uint32_t>> cornersAt(plan.originalVertexCount);
+    std::vector<char> cornerTaken(features_.size(), 0);
+    for (std::size_t c = 0; c < features_.size(); ++c)
+      if (features_[c].corner &&
+          judgeFeature(features_[c], opt_, exactSampling_) == Verdict::Restored)
+        for (const std::uint32_t k : verticesOf_[c])
+          for (int i = 0; i < plan.inserted[k].originalCount; ++i)
+            cornersAt[plan.inserted[k].original[i]].push_back(std::uint32_t(c));
+    for (std::size_t c = 0; c < features_.size(); ++c) {
+      if (features_[c].corner ||
+          judgeFeature(features_[c], opt_, exactSampling_) != Verdict::LineAcrossChamfer)
+        continue;
+      CornerPatch patch;
+      patch.edge = std::uint32_t(c);
+      for (const std::uint32_t k : verticesOf_[c])
+        for (int i = 0; i < plan.inserted[k].originalCount; ++i)
+          for (const std::uint32_t d : cornersAt[plan.inserted[k].original[i]])
+            if (!cornerTaken[d] &&
+                std::find(patch.corners.begin(), patch.corners.end(), d) == patch.corners.end())
+              patch.corners.push_back(d);
+      if (patch.corners.empty()) continue;
+      const std::optional<Vec3> point = cornerPoint(membersOf(patch));
+      if (!point) continue;
+      patch.point = *point;
+      cornerPatch_[c] = 1;
+      for (const std::uint32_t d : patch.corners) cornerTaken[d] = 1;
+      patches_.push_back(std::move(patch));
+    }
+    for (std::size_t c = 0; c < features_.size(); ++c) {
+      if (cornerTaken[c] || !features_[c].corner || verticesOf_[c].size() < 2 ||
+          judgeFeature(features_[c], opt_, exactSampling_) != Verdict::Restored)
+        continue;
+      // The vertices placement moved, each to the corner of its own three
+      // planes: one point for them all where it agrees with each of those.
+      CornerPatch patch;
+      patch.corners.push_back(std::uint32_t(c));
+      std::vector<std::uint32_t> moved;
+      for (const std::uint32_t k : verticesOf_[c])
+        if (moves_.isMoved(moves_.firstInserted() + k)) moved.push_back(k);
+      if (moved.size() < 2) continue;
+      const std::optional<Vec3> point = cornerPoint(moved);
+      if (!point) continue;
+      bool agrees = true;
+      for (const std::uint32_t k : moved)
+        agrees =
+            agrees && (positionOf(&m_.vert[moves_.firstInserted() + k]) - *point).Norm() <=
+                          opt_.rules.feature.maxFeatureOffPlaneSpacings * spacingUnit(support_);
+      if (!agrees) continue;
+      patch.point = *point;
+      patch.lone = std::move(moved);
+      patches_.push_back(std::move(patch));
+    }
+  }
+
+  /// The new vertices of a patch's features.
+  std::vector<std::uint32_t> membersOf(const CornerPatch &patch) const {
+    std::vector<std::uint32_t> members;
+    if (patch.edge != CornerPatch::kNoEdge) members = verticesOf_[patch.edge];
+    for (const std::uint32_t d : patch.corners)
+      members.insert(members.end(), verticesOf_[d].begin(), verticesOf_[d].end());
+    return members;
+  }
+
+  /// Whether every feature of `patch` is restored.
+  static bool patchRestored(const CornerPatch &patch, const std::vector<Verdict> &verdicts) {
+    if (patch.edge != CornerPatch::kNoEdge && verdicts[patch.edge] != Verdict::Restored)
+      return false;
+    for (const std::uint32_t d : patch.corners)
+      if (verdicts[d] != Verdict::Restored) return false;
+    return true;
+  }
+
+  /// Moves the vertices of every corner patch restored (findCornerPatches)
+  /// to its point.
+  void placeCornerPatches(const std::vector<Verdict> &verdicts) {
+    using Scalar = typename MeshType::ScalarType;
+    const std::size_t first = moves_.firstInserted();
+    for (CornerPatch &patch : patches_) {
+      if (!patchRestored(patch, verdicts)) continue;
+      patch.members = patch.edge != CornerPatch::kNoEdge ? membersOf(patch) : patch.lone;
+      for (const std::uint32_t k : patch.members) {
+        auto &v = m_.vert[first + k];
+        patch.before.push_back(positionOf(&v));
+        patch.placedBefore.push_back(moves_.labels().placement[first + k]);
+        v.P() = vcg::Point3<Scalar>::Construct(patch.point);
+        moves_.labels().placement[first + k] = Placement::Moved;
+      }
+    }
+  }
+
+ public:
+  /// Whether the degenerate cleanup or the intersection guard sent back a
+  /// vertex of a corner patch (placeCornerPatches): the faces around the
+  /// corner's point could not all be made valid, and a patch goes whole or
+  /// not at all.
+  bool cornerPatchRefused() {
+    bool any = false;
+    for (CornerPatch &patch : patches_) any = (patch.refused = refused(patch)) || any;
+    return any;
+  }
+
+  /// Gives up every corner patch the cleanup refused (as cornerPatchRefused
+  /// found, before the mesh was taken back to the snapshot before it): a
+  /// corner feature alone goes back to placement's own targets, one vertex at
+  /// a time; a patch with an edge is left as it came (its edge
+  /// LineAcrossChamfer, its corners CornerOfWeakEdge, as without the patch),
+  /// its vertices and their sources at rest. \pre the mesh is as
+  /// revertWeakFeatures() left it.
+  void leaveRefusedCornerPatches(EvidenceStats &stats) {
+    using Scalar = typename MeshType::ScalarType;
+    const std::size_t first = moves_.firstInserted();
+    const auto relabel = [&](std::uint32_t c, Verdict v) {
+      if (verdicts_[c] != Verdict::Restored) return;
+      --stats.verdicts[static_cast<int>(Verdict::Restored)];
+      ++stats.verdicts[static_cast<int>(v)];
+      ++stats.weakFeatures;
+      verdicts_[c] = v;
+    };
+    for (CornerPatch &patch : patches_) {
+      if (!patch.refused) continue;
+      if (patch.edge == CornerPatch::kNoEdge) {
+        for (std::size_t j = 0; j < patch.members.size(); ++j) {
+          m_.vert[first + patch.members[j]].P() = vcg::Point3<Scalar>::Construct(patch.before[j]);
+          moves_.labels().placement[first + patch.members[j]] = patch.placedBefore[j];
+        }
+      } else {
+        relabel(patch.edge, Verdict::LineAcrossChamfer);
+        for (const std::uint32_t d : patch.corners) relabel(d, Verdict::CornerOfWeakEdge);
+        for (const std::uint32_t k : patch.members) sendBackWithSources(k, stats);
+      }
+      patch.members.clear();
+      patch.refused = false;
+    }
+  }
+
+ private:
+  /// Sends inserted vertex `k` (split plan order) back to rest as
+  /// Placement::WeakEvidence, and the zone vertices projected beside it (its
+  /// sources), counting both in `stats`.
+  void sendBackWithSources(std::size_t k, EvidenceStats &stats) {
+    const std::size_t first = moves_.firstInserted();
+    if (moves_.isMoved(first + k)) {
+      moves_.sendBack(first + k, Placement::WeakEvidence);
+      ++stats.reverted;
+    }
+    const InsertedVertexSource &source = moves_.plan().inserted[k];
+    for (int i = 0; i < source.originalCount; ++i) {
+      const std::size_t v = source.original[i];
+      if (!m_.vert[v].IsD() && moves_.isMoved(v)) {
+        moves_.sendBack(v, Placement::Original);
+        ++stats.zoneReverted;
+      }
+    }
+  }
+
+  /// Whether the cleanup or the intersection guard sent back a vertex of
+  /// `patch` it placed.
+  bool refused(const CornerPatch &patch) const {
+    const std::size_t first = moves_.firstInserted();
+    for (const std::uint32_t k : patch.members)
+      if (!m_.vert[first + k].IsD() &&
+          (moves_.labels().placement[first + k] == Placement::DegenerateRevert ||
+           moves_.labels().placement[first + k] == Placement::IntersectionRevert))
+        return true;
+    return false;
+  }
+
+  std::vector<CornerPatch> patches_;                    ///< findCornerPatches
+  std::vector<char> cornerPatch_;                       ///< per feature: the edge of a patch
+  std::vector<std::vector<std::uint32_t>> verticesOf_;  ///< per feature: its inserted vertices
   MeshType &m_;
   VertexMoves<MeshType> &moves_;
   const SupportPlanes &support_;

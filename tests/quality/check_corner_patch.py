@@ -1,0 +1,34 @@
+#!/usr/bin/env python3
+"""Assertions on corners of four faces (results JSON of run.py --models pyramid,octahedron
+--input-keys vdb_1pct,vdb_0.5pct --variants auto).
+
+OpenVDB's voxel remesher cuts a corner where four faces meet into a chamfer patch that holds,
+besides its corner triangles, an edge between two opposite faces: their planes meet on a line
+across the patch (verdict line_across_chamfer), and until then the corner was left with it
+(corner_of_weak_edge). Such an edge and the corners beside it are now one corner, placed at the
+point all their regions' planes determine (feature_evidence.h: EvidenceGuard's corner patches),
+and a corner cluster of several new vertices goes to that one point too. Asserted: all four
+inputs made, sharpened and measured, none made worse (families.is_worse), and each max error
+lowered by at least its floor, set between the factors before the change and after it
+(docs/auto-method-decisions.md has the figures).
+"""
+import checks  # first: puts bench/quality on sys.path
+
+MULTIPLIER = 2.0
+# (model, resolution) -> the least max reduction factor.
+MIN_MAX_FACTORS = {
+    ("pyramid", "1%"): 6.0,
+    ("pyramid", "0.5%"): 8.0,
+    ("octahedron", "1%"): 2.8,
+    ("octahedron", "0.5%"): 1.5,
+}
+
+
+def main():
+    checks.check_max_factors_by_model(
+        MIN_MAX_FACTORS, "corner patches: corners of four faces placed whole, max down",
+        MULTIPLIER)
+
+
+if __name__ == "__main__":
+    main()
