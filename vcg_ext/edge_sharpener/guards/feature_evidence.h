@@ -732,8 +732,11 @@ class EvidenceGuard {
       countSheetCrossings(m_, moves_, support_, out.lifts, featureOf_, longestInputEdge_,
                           features_);
     findCornerPatches();
+    std::vector<char> joined(features_.size(), 0);
+    for (const CornerPatch &patch : patches_)
+      if (patch.edge != CornerPatch::kNoEdge) joined[patch.edge] = 1;
     out.verdicts = featureVerdicts(moves_.plan(), features_, featureOf_, stats.medianLift, surface_,
-                                   opt_, exactSampling_, held_, cornerPatch_);
+                                   opt_, exactSampling_, held_, joined);
     // An edge joined to corners stands or falls with them.
     for (const CornerPatch &patch : patches_)
       if (patch.edge != CornerPatch::kNoEdge && !patchRestored(patch, out.verdicts))
@@ -994,8 +997,10 @@ class EvidenceGuard {
   /// planes fix a point (cornerPoint).
   void findCornerPatches() {
     patches_.clear();
-    cornerPatch_.assign(features_.size(), 0);
     const SplitPlan &plan = moves_.plan();
+    std::vector<Verdict> own(features_.size());  // each feature on its own evidence
+    for (std::size_t c = 0; c < features_.size(); ++c)
+      own[c] = judgeFeature(features_[c], opt_, exactSampling_);
     verticesOf_.assign(features_.size(), {});
     for (std::size_t k = 0; k < plan.inserted.size(); ++k)
       if (!m_.vert[moves_.firstInserted() + k].IsD())
@@ -1003,15 +1008,12 @@ class EvidenceGuard {
     std::vector<std::vector<std::uint32_t>> cornersAt(plan.originalVertexCount);
     std::vector<char> cornerTaken(features_.size(), 0);
     for (std::size_t c = 0; c < features_.size(); ++c)
-      if (features_[c].corner &&
-          judgeFeature(features_[c], opt_, exactSampling_) == Verdict::Restored)
+      if (features_[c].corner && own[c] == Verdict::Restored)
         for (const std::uint32_t k : verticesOf_[c])
           for (int i = 0; i < plan.inserted[k].originalCount; ++i)
             cornersAt[plan.inserted[k].original[i]].push_back(std::uint32_t(c));
     for (std::size_t c = 0; c < features_.size(); ++c) {
-      if (features_[c].corner ||
-          judgeFeature(features_[c], opt_, exactSampling_) != Verdict::LineAcrossChamfer)
-        continue;
+      if (features_[c].corner || own[c] != Verdict::LineAcrossChamfer) continue;
       CornerPatch patch;
       patch.edge = std::uint32_t(c);
       for (const std::uint32_t k : verticesOf_[c])
@@ -1024,13 +1026,12 @@ class EvidenceGuard {
       const std::optional<Vec3> point = cornerPoint(membersOf(patch));
       if (!point) continue;
       patch.point = *point;
-      cornerPatch_[c] = 1;
       for (const std::uint32_t d : patch.corners) cornerTaken[d] = 1;
       patches_.push_back(std::move(patch));
     }
     for (std::size_t c = 0; c < features_.size(); ++c) {
       if (cornerTaken[c] || !features_[c].corner || verticesOf_[c].size() < 2 ||
-          judgeFeature(features_[c], opt_, exactSampling_) != Verdict::Restored)
+          own[c] != Verdict::Restored)
         continue;
       // The vertices placement moved, each to the corner of its own three
       // planes: one point for them all where it agrees with each of those.
@@ -1113,8 +1114,6 @@ class EvidenceGuard {
     const std::size_t first = moves_.firstInserted();
     const auto relabel = [&](std::uint32_t c, Verdict v) {
       if (verdicts_[c] != Verdict::Restored) return;
-      --stats.verdicts[static_cast<int>(Verdict::Restored)];
-      ++stats.verdicts[static_cast<int>(v)];
       ++stats.weakFeatures;
       verdicts_[c] = v;
     };
@@ -1133,6 +1132,7 @@ class EvidenceGuard {
       patch.members.clear();
       patch.refused = false;
     }
+    stats.verdicts = countVerdicts(verdicts_);
   }
 
  private:
@@ -1168,7 +1168,6 @@ class EvidenceGuard {
   }
 
   std::vector<CornerPatch> patches_;                    ///< findCornerPatches
-  std::vector<char> cornerPatch_;                       ///< per feature: the edge of a patch
   std::vector<std::vector<std::uint32_t>> verticesOf_;  ///< per feature: its inserted vertices
   MeshType &m_;
   VertexMoves<MeshType> &moves_;
