@@ -924,7 +924,7 @@ class EvidenceGuard {
     std::uint32_t edge = kNoEdge;
     std::vector<std::uint32_t> corners;
     Vec3 point{0, 0, 0};
-    /// A corner alone: the new vertices placement moved, which it places.
+    /// A corner alone: the new vertices it places (findCornerPatches).
     std::vector<std::uint32_t> lone;
     std::vector<std::uint32_t> members;  ///< inserted vertices placed there (placeCornerPatches)
     std::vector<Vec3> before;            ///< ...and where placement had put them
@@ -1034,14 +1034,22 @@ class EvidenceGuard {
           own[c] != Verdict::Restored)
         continue;
       // The vertices placement moved, each to the corner of its own three
-      // planes: one point for them all where it agrees with each of those.
+      // planes, and those it kept at rest between regions that are planes
+      // (their fits near the corner see its other faces, the regions' own
+      // planes do not): one point for them all where it agrees with each
+      // move placement made.
       CornerPatch patch;
       patch.corners.push_back(std::uint32_t(c));
-      std::vector<std::uint32_t> moved;
-      for (const std::uint32_t k : verticesOf_[c])
-        if (moves_.isMoved(moves_.firstInserted() + k)) moved.push_back(k);
-      if (moved.size() < 2) continue;
-      const std::optional<Vec3> point = cornerPoint(moved);
+      std::vector<std::uint32_t> moved, members;
+      for (const std::uint32_t k : verticesOf_[c]) {
+        if (moves_.isMoved(moves_.firstInserted() + k))
+          moved.push_back(k);
+        else if (!sourcesOnOwnPlanes(k))
+          continue;
+        members.push_back(k);
+      }
+      if (moved.empty() || members.size() < 2) continue;
+      const std::optional<Vec3> point = cornerPoint(members);
       if (!point) continue;
       bool agrees = true;
       for (const std::uint32_t k : moved)
@@ -1050,9 +1058,21 @@ class EvidenceGuard {
                           opt_.rules.feature.maxFeatureOffPlaneSpacings * spacingUnit(support_);
       if (!agrees) continue;
       patch.point = *point;
-      patch.lone = std::move(moved);
+      patch.lone = std::move(members);
       patches_.push_back(std::move(patch));
     }
+  }
+
+  /// Whether every source of inserted vertex `k` lies in a region that is a
+  /// plane (SupportPlanes::regionPlanes).
+  bool sourcesOnOwnPlanes(std::uint32_t k) const {
+    const InsertedVertexSource &src = moves_.plan().inserted[k];
+    for (int i = 0; i < src.originalCount; ++i) {
+      const std::uint32_t s = src.original[i];
+      if (s >= support_.region.size() || !regionPlaneOf(support_.regionPlanes, support_.region[s]))
+        return false;
+    }
+    return true;
   }
 
   /// The new vertices of a patch's features.
