@@ -777,7 +777,9 @@ class EvidenceGuard {
   }
 
   /// Per inserted vertex (split plan order), whether its move stays: its
-  /// feature is not weak and its own evidence is not (vertexIsWeak). Of a
+  /// feature is not weak and its own evidence is not (vertexIsWeak), unless it
+  /// went to a corner placed whole, whose point all its regions' planes
+  /// vouch for (cornerPoint): a patch is kept or given up whole. Of a
   /// feature already sharp (Judgement::alreadySharp) the moves that lift
   /// their vertex off the input stay (their own lift at least the median
   /// bound: mostlyAlreadySharp), and so does the corner vertex of a face one
@@ -789,7 +791,9 @@ class EvidenceGuard {
   std::vector<char> keptMoves(const Judgement &judged) {
     const SplitPlan &plan = moves_.plan();
     const std::size_t count = plan.inserted.size(), first = moves_.firstInserted();
-    std::vector<char> kept(count, 0), lifting(count, 0);
+    std::vector<char> kept(count, 0), lifting(count, 0), placedWhole(count, 0);
+    for (const CornerPatch &patch : patches_)
+      for (const std::uint32_t k : patch.members) placedWhole[k] = 1;
     slidingVertex_.assign(count, 0);
     retreatFirst_.assign(m_.vert.size(), 0);
     const auto sharpAlready = [&](std::size_t k) { return judged.alreadySharp(featureOf_[k]); };
@@ -800,8 +804,8 @@ class EvidenceGuard {
       if (m_.vert[first + k].IsD()) continue;
       // Not moved (lift -1): placement left it, nothing to cut back there.
       lifting[k] = judged.lifts[k] >= 0 && !mostlyAlreadySharp(judged.lifts[k], opt_);
-      kept[k] = (sharpAlready(k) ? lifting[k] : !judged.left(featureOf_[k])) && !vertexIsWeak(k) &&
-                !outside(k);
+      kept[k] = (sharpAlready(k) ? lifting[k] : !judged.left(featureOf_[k])) &&
+                (placedWhole[k] || !vertexIsWeak(k)) && !outside(k);
     }
     for (const SplitFace &face : plan.faces) {
       const int corner = face.centerVertex;
