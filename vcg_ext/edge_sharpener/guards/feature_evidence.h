@@ -928,9 +928,9 @@ class EvidenceGuard {
     std::uint32_t edge = kNoEdge;
     std::vector<std::uint32_t> corners;
     Vec3 point{0, 0, 0};
-    /// A corner alone: the new vertices it places (findCornerPatches).
-    std::vector<std::uint32_t> lone;
-    std::vector<std::uint32_t> members;  ///< inserted vertices placed there (placeCornerPatches)
+    /// The new vertices it would place (findCornerPatches).
+    std::vector<std::uint32_t> vertices;
+    std::vector<std::uint32_t> members;  ///< of those, placed there (placeCornerPatches)
     std::vector<Vec3> before;            ///< ...and where placement had put them
     std::vector<Placement> placedBefore;
     bool refused = false;  ///< cornerPatchRefused found the cleanup refused it
@@ -966,10 +966,8 @@ class EvidenceGuard {
     std::sort(regions.begin(), regions.end());
     regions.erase(std::unique(regions.begin(), regions.end()), regions.end());
     for (const long r : regions) {
-      const bool own = std::size_t(r) < support_.regionPlanes.size() &&
-                       support_.regionPlanes[r].normal.SquaredNorm() > 0;
-      if (own) {
-        planes.push_back(support_.regionPlanes[r]);
+      if (const Plane *own = regionPlaneOf(support_.regionPlanes, int(r))) {
+        planes.push_back(*own);
         weights.push_back(1.0);
         continue;
       }
@@ -1027,7 +1025,8 @@ class EvidenceGuard {
                 std::find(patch.corners.begin(), patch.corners.end(), d) == patch.corners.end())
               patch.corners.push_back(d);
       if (patch.corners.empty()) continue;
-      const std::optional<Vec3> point = cornerPoint(membersOf(patch));
+      patch.vertices = membersOf(patch);
+      const std::optional<Vec3> point = cornerPoint(patch.vertices);
       if (!point) continue;
       patch.point = *point;
       for (const std::uint32_t d : patch.corners) cornerTaken[d] = 1;
@@ -1062,7 +1061,7 @@ class EvidenceGuard {
                           opt_.rules.feature.maxFeatureOffPlaneSpacings * spacingUnit(support_);
       if (!agrees) continue;
       patch.point = *point;
-      patch.lone = std::move(members);
+      patch.vertices = std::move(members);
       patches_.push_back(std::move(patch));
     }
   }
@@ -1104,7 +1103,7 @@ class EvidenceGuard {
     const std::size_t first = moves_.firstInserted();
     for (CornerPatch &patch : patches_) {
       if (!patchRestored(patch, verdicts)) continue;
-      patch.members = patch.edge != CornerPatch::kNoEdge ? membersOf(patch) : patch.lone;
+      patch.members = patch.vertices;
       for (const std::uint32_t k : patch.members) {
         auto &v = m_.vert[first + k];
         patch.before.push_back(positionOf(&v));
