@@ -68,10 +68,11 @@
 #                               new vertices sharing one target no longer keep the remesher's
 #                               middle row off both faces; max factors against floors, none
 #                               made worse (skipped without OpenVDB).
-#   quality.corner_patch        pyramid and octahedron by OpenVDB at 1% and 0.5%: a corner of
-#                               four faces whose chamfer holds an edge between opposite faces is
-#                               placed whole at its planes' point; max factors against floors,
-#                               none made worse (skipped without OpenVDB).
+#   quality.corner_patch        pyramid, octahedron and hexagonal_pyramid by OpenVDB at 1% and
+#                               0.5%: a corner of four or more faces whose chamfer holds edges
+#                               between faces that touch only there is placed whole at its
+#                               planes' point; max factors against floors, none made worse
+#                               (skipped without OpenVDB).
 # The full benchmark (docs/results.md) is scripts/bench-quality.sh, not a test.
 # All exit 77 (skipped) when MeshLab or python3 is not installed, fandisk_targets and
 # long_move also without ../shared. Run: ctest -L quality

@@ -433,7 +433,21 @@ TEST(FeatureEvidence, AnEdgeJoinedToItsCornerIsJudgedWithIt) {
   EXPECT_EQ(verdict[corner], es::Verdict::Restored);
   EXPECT_EQ(verdict[b], es::Verdict::Restored);
 
+  // An edge whose moves placement mostly refused (the line of two faces
+  // that touch only at the corner runs off the solid past it) is judged
+  // with its corner as well.
+  features[a].lineChamferAngleRad = 0;
+  features[a].moved = features[a].vertices / 4;
+  verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt);
+  EXPECT_EQ(verdict[a], es::Verdict::MostlyRefused);
+  EXPECT_EQ(verdict[corner], es::Verdict::CornerOfWeakEdge);
+  verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt,
+                                /*exactSampling=*/false, /*held=*/{}, patch);
+  EXPECT_EQ(verdict[a], es::Verdict::Restored);
+  EXPECT_EQ(verdict[corner], es::Verdict::Restored);
+
   // A patch does not excuse another rule: an edge off its planes stays left.
+  features[a].moved = features[a].vertices;
   features[a].maxOffPlane = features[a].offPlaneQ90 = features[a].offPlaneMedian = 1.0;
   features[a].lineChamferAngleRad = 0;
   verdict = es::featureVerdicts(t.plan, features, featureOf, /*lift=*/1.0, kRoughSurface, opt,

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Assertions on corners of four faces (results JSON of run.py --models pyramid,octahedron
---input-keys vdb_1pct,vdb_0.5pct --variants auto).
+"""Assertions on corners of four or more faces (results JSON of run.py --models
+pyramid,octahedron,hexagonal_pyramid --input-keys vdb_1pct,vdb_0.5pct --variants auto).
 
 OpenVDB's voxel remesher cuts a corner where four faces meet into a chamfer patch that holds,
 besides its corner triangles, an edge between two opposite faces: their planes meet on a line
@@ -9,8 +9,11 @@ across the patch (verdict line_across_chamfer), and until then the corner was le
 point all their regions' planes determine (feature_evidence.h: EvidenceGuard's corner patches),
 and a corner cluster of several new vertices goes to that one point too, with those of its
 vertices that placement kept at rest between regions that are planes (their fits near the
-corner see its other faces: the octahedron by OpenVDB 0.5%). Asserted: all four
-inputs made, sharpened and measured, none made worse (families.is_worse), and each max error
+corner see its other faces: the octahedron by OpenVDB 0.5%). At the hexagonal pyramid's apex
+(six faces) by OpenVDB 0.5% the patch holds edges between faces two apart, whose line runs off
+the solid past the apex, so placement refused most of their moves (mostly_refused): they join
+the apex as well, and the patch's reach is measured across the corner's faces, not along its
+acute tip. Asserted: all six inputs made, sharpened and measured, none made worse (families.is_worse), and each max error
 lowered by at least its floor, set between the factors before the change and after it
 (docs/auto-method-decisions.md has the figures).
 """
@@ -23,6 +26,8 @@ MIN_MAX_FACTORS = {
     ("pyramid", "0.5%"): 8.0,
     ("octahedron", "1%"): 2.8,
     ("octahedron", "0.5%"): 2.8,
+    ("hexagonal_pyramid", "1%"): 2.0,
+    ("hexagonal_pyramid", "0.5%"): 3.0,
 }
 
 

@@ -82,7 +82,8 @@ struct ExtendedSettings {
   /// A new vertex stays at rest when the planes meet farther from it than
   /// this many sample spacings: a remesher's chamfer cuts a sample or two off
   /// a sharp edge, while a CAD mesh's long slivers throw vertices far away.
-  /// 0 disables.
+  /// A corner placed whole asks each of its vertices to rest this near each
+  /// of its planes instead (the cut measured across its faces). 0 disables.
   double maxDisplacementSpacings = 2.5;
   /// ...or more than this factor above its chamfer than their angle allows
   /// (geometry.h: chamferApexHeightRatio). 0 disables.

@@ -35,6 +35,7 @@
 #include "../placement.h"
 #include "../report.h"
 #include "../subdivision.h"
+#include "../util/disjoint_sets.h"
 #include "../util/non_manifold.h"
 #include "../util/qef.h"
 #include "../util/statistics.h"
@@ -591,9 +592,9 @@ inline std::size_t featuresCutBySelection(const std::vector<char> &outside,
 /// non-manifold spot), AtNonManifoldSpot (restoring it would bend that face);
 /// a feature all of whose new vertices lie on faces outside the user's
 /// selection (verticesOutsideSelection), OutsideSelection;
-/// an edge whose planes meet across its chamfer (LineAcrossChamfer) but that
-/// `cornerPatch` joins to the corners beside it (EvidenceGuard::
-/// findCornerPatches), judged with them; and, on a mesh sampled exactly and mostly
+/// a feature placement could not restore on its own (LineAcrossChamfer,
+/// MostlyRefused) that `cornerPatch` joins to a corner (EvidenceGuard::
+/// findCornerPatches), judged with it; and, on a mesh sampled exactly and mostly
 /// sharp already, a feature whose own moves slide along it, AlreadySharp
 /// (Feature::medianLift; its moves that lift are judged one by one,
 /// EvidenceGuard::keptMoves).
@@ -609,7 +610,8 @@ inline std::vector<Verdict> featureVerdicts(const SplitPlan &plan,
   std::vector<Verdict> verdict(features.size());
   for (std::size_t c = 0; c < features.size(); ++c) {
     verdict[c] = judgeFeature(features[c], opt, exactSampling);
-    if (c < cornerPatch.size() && cornerPatch[c] && verdict[c] == Verdict::LineAcrossChamfer)
+    if (c < cornerPatch.size() && cornerPatch[c] &&
+        (verdict[c] == Verdict::LineAcrossChamfer || verdict[c] == Verdict::MostlyRefused))
       verdict[c] = Verdict::Restored;
   }
   for (std::size_t k = 0; k < plan.inserted.size() && !held.empty(); ++k)
@@ -734,13 +736,15 @@ class EvidenceGuard {
     findCornerPatches();
     std::vector<char> joined(features_.size(), 0);
     for (const CornerPatch &patch : patches_)
-      if (patch.edge != CornerPatch::kNoEdge) joined[patch.edge] = 1;
+      if (!patch.edges.empty())
+        for (const std::uint32_t c : featuresOf(patch)) joined[c] = 1;
     out.verdicts = featureVerdicts(moves_.plan(), features_, featureOf_, stats.medianLift, surface_,
                                    opt_, exactSampling_, held_, joined);
-    // An edge joined to corners stands or falls with them.
+    // The edges joined to corners stand or fall with them.
     for (const CornerPatch &patch : patches_)
-      if (patch.edge != CornerPatch::kNoEdge && !patchRestored(patch, out.verdicts))
-        out.verdicts[patch.edge] = Verdict::LineAcrossChamfer;
+      if (!patch.edges.empty() && !patchRestored(patch, out.verdicts))
+        leavePatchFeatures(patch, out.verdicts,
+                           [&](std::uint32_t c, Verdict v) { out.verdicts[c] = v; });
     stats.verdicts = countVerdicts(out.verdicts);
     stats.cutBySelection = featuresCutBySelection(outsideSelection_, featureOf_, features_.size());
     for (std::size_t c = 0; c < features_.size(); ++c) {
@@ -919,13 +923,13 @@ class EvidenceGuard {
 
  private:
   /// One corner where three or more regions meet, placed whole: a corner
-  /// feature, and the edge whose flanks' planes meet across its chamfer beside
-  /// it when there is one (not an edge but part of the corner: a pyramid's
-  /// two opposite faces touch only at its apex). All its new vertices go to
-  /// the one point all their sources' planes determine.
+  /// feature, and the edges beside it that placement could not restore on
+  /// their own (edgeJoinsCorner: not edges but parts of the corner, as a
+  /// pyramid's two opposite faces, or a hexagonal pyramid's faces two apart,
+  /// touch only at its apex). All its new vertices go to the one point all
+  /// their sources' planes determine.
   struct CornerPatch {
-    static constexpr std::uint32_t kNoEdge = ~std::uint32_t(0);
-    std::uint32_t edge = kNoEdge;
+    std::vector<std::uint32_t> edges;
     std::vector<std::uint32_t> corners;
     Vec3 point{0, 0, 0};
     /// The new vertices it would place (findCornerPatches).
@@ -936,95 +940,151 @@ class EvidenceGuard {
     bool refused = false;  ///< cornerPatchRefused found the cleanup refused it
   };
 
-  /// The point the planes of the regions of the sources of `members`
-  /// (inserted vertices) determine, when they fix one: the QEF of dual contouring with rank three
-  /// (util/qef.h), every plane passing within FeatureRules::
-  /// maxFeatureOffPlaneSpacings of it, and within ExtendedSettings::
-  /// maxDisplacementSpacings of every member's rest.
-  std::optional<Vec3> cornerPoint(const std::vector<std::uint32_t> &members) const {
-    const SplitPlan &plan = moves_.plan();
-    Vec3 center(0, 0, 0);
-    std::vector<std::uint32_t> sources;
-    for (const std::uint32_t k : members) {
-      center += plan.inserted[k].rest;
-      for (int i = 0; i < plan.inserted[k].originalCount; ++i)
-        sources.push_back(plan.inserted[k].original[i]);
-    }
-    center /= double(members.size());
-    std::sort(sources.begin(), sources.end());
-    sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
-    // Each region weighs alike: its own plane where it is one, else the
-    // planes fitted at its sources, shared out.
+  /// The planes of the regions of the sources of `members` (inserted
+  /// vertices), each region weighing alike: its own plane where it is one,
+  /// else the planes fitted at its sources, shared out.
+  struct RegionPlanes {
     std::vector<Plane> planes;
     std::vector<double> weights;
-    std::vector<long> regions;
+    std::size_t regions = 0;
+  };
+  RegionPlanes regionPlanesOf(const std::vector<std::uint32_t> &members) const {
+    const SplitPlan &plan = moves_.plan();
+    std::vector<std::uint32_t> sources;
+    for (const std::uint32_t k : members)
+      for (int i = 0; i < plan.inserted[k].originalCount; ++i)
+        sources.push_back(plan.inserted[k].original[i]);
+    std::sort(sources.begin(), sources.end());
+    sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
     const auto regionOf = [&](std::uint32_t v) -> long {
       return v < support_.region.size() ? support_.region[v] : -1;
     };
+    std::vector<long> regions;
     for (const std::uint32_t v : sources)
       if (regionOf(v) >= 0) regions.push_back(regionOf(v));
     std::sort(regions.begin(), regions.end());
     regions.erase(std::unique(regions.begin(), regions.end()), regions.end());
+    RegionPlanes out;
+    out.regions = regions.size();
     for (const long r : regions) {
       if (const Plane *own = regionPlaneOf(support_.regionPlanes, int(r))) {
-        planes.push_back(*own);
-        weights.push_back(1.0);
+        out.planes.push_back(*own);
+        out.weights.push_back(1.0);
         continue;
       }
-      const std::size_t first = planes.size();
+      const std::size_t first = out.planes.size();
       for (const std::uint32_t v : sources)
         if (regionOf(v) == r && support_.plane(v).normal.SquaredNorm() > 0)
-          planes.push_back(support_.plane(v));
-      for (std::size_t i = first; i < planes.size(); ++i)
-        weights.push_back(1.0 / double(planes.size() - first));
+          out.planes.push_back(support_.plane(v));
+      for (std::size_t i = first; i < out.planes.size(); ++i)
+        out.weights.push_back(1.0 / double(out.planes.size() - first));
     }
-    if (regions.size() < 3 || planes.empty()) return std::nullopt;
-    const QefSolution corner = solveQef(planes, weights, center);
-    if (corner.rank != 3) return std::nullopt;
-    const double unit = spacingUnit(support_);
+    return out;
+  }
+
+  /// Whether inserted vertex `k` rests within ExtendedSettings::
+  /// maxDisplacementSpacings of every plane in `planes`: a sampler cuts a
+  /// corner a sample or two deep, measured across its faces (along an acute
+  /// tip's axis the cut reaches farther).
+  bool withinCorner(std::uint32_t k, const std::vector<Plane> &planes) const {
+    const Vec3 &rest = moves_.plan().inserted[k].rest;
+    const double bound = opt_.extended.maxDisplacementSpacings * spacingUnit(support_);
     for (const Plane &pl : planes)
-      if (std::abs(pl.normal * (corner.point - pl.point)) >
+      if (std::abs(pl.normal * (rest - pl.point)) > bound) return false;
+    return true;
+  }
+
+  /// The point the planes of the regions of the sources of `members`
+  /// (regionPlanesOf) determine, when they fix one: the QEF of dual
+  /// contouring with rank three (util/qef.h), every plane passing within
+  /// FeatureRules::maxFeatureOffPlaneSpacings of it, every member within the
+  /// corner's reach (withinCorner).
+  std::optional<Vec3> cornerPoint(const std::vector<std::uint32_t> &members) const {
+    const SplitPlan &plan = moves_.plan();
+    Vec3 center(0, 0, 0);
+    for (const std::uint32_t k : members) center += plan.inserted[k].rest;
+    center /= double(members.size());
+    const RegionPlanes corner = regionPlanesOf(members);
+    if (corner.regions < 3 || corner.planes.empty()) return std::nullopt;
+    const QefSolution solution = solveQef(corner.planes, corner.weights, center);
+    if (solution.rank != 3) return std::nullopt;
+    const double unit = spacingUnit(support_);
+    for (const Plane &pl : corner.planes)
+      if (std::abs(pl.normal * (solution.point - pl.point)) >
           opt_.rules.feature.maxFeatureOffPlaneSpacings * unit)
         return std::nullopt;
     for (const std::uint32_t k : members)
-      if ((corner.point - plan.inserted[k].rest).Norm() >
-          opt_.extended.maxDisplacementSpacings * unit)
-        return std::nullopt;
-    return corner.point;
+      if (!withinCorner(k, corner.planes)) return std::nullopt;
+    return solution.point;
   }
 
-  /// Finds the corner patches (CornerPatch): every edge feature judged
-  /// LineAcrossChamfer on its own that shares sources with corner features
-  /// restored on their own, and every other such corner feature, where their
-  /// planes fix a point (cornerPoint).
+  /// Whether edge feature `c`, judged `own` on its own evidence, may be part
+  /// of a corner: its planes meet across its chamfer, or placement refused
+  /// most of its moves (the line of two faces that touch only at a corner
+  /// runs off the solid past it).
+  static bool edgeJoinsCorner(Verdict own) {
+    return own == Verdict::LineAcrossChamfer || own == Verdict::MostlyRefused;
+  }
+
+  /// Finds the corner patches (CornerPatch): the corner features restored on
+  /// their own, with the edges beside them that may be part of a corner
+  /// (edgeJoinsCorner) and lie within reach of them, and the corners such
+  /// edges share sources with, joined through their sources, where their
+  /// planes fix one point (cornerPoint); and every other corner feature
+  /// restored on its own whose vertices agree on one.
   void findCornerPatches() {
     patches_.clear();
     const SplitPlan &plan = moves_.plan();
-    std::vector<Verdict> own(features_.size());  // each feature on its own evidence
+    ownVerdicts_.resize(features_.size());
     for (std::size_t c = 0; c < features_.size(); ++c)
-      own[c] = judgeFeature(features_[c], opt_, exactSampling_);
+      ownVerdicts_[c] = judgeFeature(features_[c], opt_, exactSampling_);
+    const std::vector<Verdict> &own = ownVerdicts_;
     verticesOf_.assign(features_.size(), {});
     for (std::size_t k = 0; k < plan.inserted.size(); ++k)
       if (!m_.vert[moves_.firstInserted() + k].IsD())
         verticesOf_[featureOf_[k]].push_back(std::uint32_t(k));
-    std::vector<std::vector<std::uint32_t>> cornersAt(plan.originalVertexCount);
-    std::vector<char> cornerTaken(features_.size(), 0);
+    const auto candidate = [&](std::size_t c) {
+      return features_[c].corner ? own[c] == Verdict::Restored || own[c] == Verdict::MostlyRefused
+                                 : edgeJoinsCorner(own[c]);
+    };
+    // An edge joins a corner when each of its vertices is within the reach
+    // of the corner's own planes.
+    std::vector<std::vector<Plane>> cornerPlanes(features_.size());
     for (std::size_t c = 0; c < features_.size(); ++c)
-      if (features_[c].corner && own[c] == Verdict::Restored)
+      if (features_[c].corner && candidate(c))
+        cornerPlanes[c] = regionPlanesOf(verticesOf_[c]).planes;
+    const auto withinReach = [&](std::size_t edge, std::size_t corner) {
+      for (const std::uint32_t k : verticesOf_[edge])
+        if (!withinCorner(k, cornerPlanes[corner])) return false;
+      return true;
+    };
+    std::vector<std::vector<std::uint32_t>> featuresAt(plan.originalVertexCount);
+    for (std::size_t c = 0; c < features_.size(); ++c)
+      if (candidate(c))
         for (const std::uint32_t k : verticesOf_[c])
           for (int i = 0; i < plan.inserted[k].originalCount; ++i)
-            cornersAt[plan.inserted[k].original[i]].push_back(std::uint32_t(c));
-    for (std::size_t c = 0; c < features_.size(); ++c) {
-      if (features_[c].corner || own[c] != Verdict::LineAcrossChamfer) continue;
+            featuresAt[plan.inserted[k].original[i]].push_back(std::uint32_t(c));
+    detail::DisjointSets cluster(features_.size());
+    std::vector<char> clustered(features_.size(), 0);
+    for (const std::vector<std::uint32_t> &at : featuresAt)
+      for (const std::uint32_t e : at)
+        for (const std::uint32_t d : at)
+          if (!features_[e].corner && features_[d].corner && withinReach(e, d)) {
+            cluster.join(e, d);
+            clustered[e] = clustered[d] = 1;
+          }
+    std::vector<std::vector<std::uint32_t>> byRoot(features_.size());
+    for (std::size_t c = 0; c < features_.size(); ++c)
+      if (clustered[c]) byRoot[cluster.find(std::uint32_t(c))].push_back(std::uint32_t(c));
+    std::vector<char> cornerTaken(features_.size(), 0);
+    for (const std::vector<std::uint32_t> &group : byRoot) {
       CornerPatch patch;
-      patch.edge = std::uint32_t(c);
-      for (const std::uint32_t k : verticesOf_[c])
-        for (int i = 0; i < plan.inserted[k].originalCount; ++i)
-          for (const std::uint32_t d : cornersAt[plan.inserted[k].original[i]])
-            if (!cornerTaken[d] &&
-                std::find(patch.corners.begin(), patch.corners.end(), d) == patch.corners.end())
-              patch.corners.push_back(d);
-      if (patch.corners.empty()) continue;
+      bool restoredCorner = false;
+      for (const std::uint32_t c : group) {
+        (features_[c].corner ? patch.corners : patch.edges).push_back(c);
+        restoredCorner = restoredCorner || (features_[c].corner && own[c] == Verdict::Restored);
+      }
+      if (!restoredCorner) continue;
       patch.vertices = membersOf(patch);
       const std::optional<Vec3> point = cornerPoint(patch.vertices);
       if (!point) continue;
@@ -1081,16 +1141,38 @@ class EvidenceGuard {
   /// The new vertices of a patch's features.
   std::vector<std::uint32_t> membersOf(const CornerPatch &patch) const {
     std::vector<std::uint32_t> members;
-    if (patch.edge != CornerPatch::kNoEdge) members = verticesOf_[patch.edge];
+    for (const std::uint32_t e : patch.edges)
+      members.insert(members.end(), verticesOf_[e].begin(), verticesOf_[e].end());
     for (const std::uint32_t d : patch.corners)
       members.insert(members.end(), verticesOf_[d].begin(), verticesOf_[d].end());
     return members;
   }
 
+  /// The features of `patch`, its edges then its corners.
+  static std::vector<std::uint32_t> featuresOf(const CornerPatch &patch) {
+    std::vector<std::uint32_t> out = patch.edges;
+    out.insert(out.end(), patch.corners.begin(), patch.corners.end());
+    return out;
+  }
+
+  /// Leaves a patch with edges as without it: each of its features restored
+  /// in `verdicts` through the patch (`relabel`) goes back to the verdict of
+  /// its own evidence, a corner restored on its own to CornerOfWeakEdge (its
+  /// edges are left).
+  template <class Relabel>
+  void leavePatchFeatures(const CornerPatch &patch, const std::vector<Verdict> &verdicts,
+                          Relabel relabel) const {
+    for (const std::uint32_t c : featuresOf(patch)) {
+      if (verdicts[c] != Verdict::Restored) continue;
+      const Verdict own = ownVerdicts_[c];
+      relabel(c, own == Verdict::Restored ? Verdict::CornerOfWeakEdge : own);
+    }
+  }
+
   /// Whether every feature of `patch` is restored.
   static bool patchRestored(const CornerPatch &patch, const std::vector<Verdict> &verdicts) {
-    if (patch.edge != CornerPatch::kNoEdge && verdicts[patch.edge] != Verdict::Restored)
-      return false;
+    for (const std::uint32_t e : patch.edges)
+      if (verdicts[e] != Verdict::Restored) return false;
     for (const std::uint32_t d : patch.corners)
       if (verdicts[d] != Verdict::Restored) return false;
     return true;
@@ -1142,14 +1224,13 @@ class EvidenceGuard {
     };
     for (CornerPatch &patch : patches_) {
       if (!patch.refused) continue;
-      if (patch.edge == CornerPatch::kNoEdge) {
+      if (patch.edges.empty()) {
         for (std::size_t j = 0; j < patch.members.size(); ++j) {
           m_.vert[first + patch.members[j]].P() = vcg::Point3<Scalar>::Construct(patch.before[j]);
           moves_.labels().placement[first + patch.members[j]] = patch.placedBefore[j];
         }
       } else {
-        relabel(patch.edge, Verdict::LineAcrossChamfer);
-        for (const std::uint32_t d : patch.corners) relabel(d, Verdict::CornerOfWeakEdge);
+        leavePatchFeatures(patch, verdicts_, [&](std::uint32_t c, Verdict v) { relabel(c, v); });
         for (const std::uint32_t k : patch.members) sendBackWithSources(k, stats);
       }
       patch.members.clear();
@@ -1192,6 +1273,7 @@ class EvidenceGuard {
 
   std::vector<CornerPatch> patches_;                    ///< findCornerPatches
   std::vector<std::vector<std::uint32_t>> verticesOf_;  ///< per feature: its inserted vertices
+  std::vector<Verdict> ownVerdicts_;  ///< per feature: judgeFeature on its own (findCornerPatches)
   MeshType &m_;
   VertexMoves<MeshType> &moves_;
   const SupportPlanes &support_;
