@@ -583,6 +583,15 @@ inline std::size_t featuresCutBySelection(const std::vector<char> &outside,
   return std::size_t(std::count(side.begin(), side.end(), 3));
 }
 
+/// Whether a feature judged `v` on its own was left for placement's reasons
+/// only (its planes' line crosses its chamfer, or placement refused most of
+/// its moves), so that a corner patch may take it (EvidenceGuard::
+/// findCornerPatches): the line of two faces that touch only at a corner
+/// runs off the solid past it.
+inline bool placementLeft(Verdict v) {
+  return v == Verdict::LineAcrossChamfer || v == Verdict::MostlyRefused;
+}
+
 /// Per feature, its verdict: every feature's Verdict::MeshEvidenceWeak when
 /// the mesh as a whole shows too little evidence (meshEvidenceIsWeak with the
 /// moves' median `lift`), else its own (judgeFeature, on a mesh sampled
@@ -610,8 +619,7 @@ inline std::vector<Verdict> featureVerdicts(const SplitPlan &plan,
   std::vector<Verdict> verdict(features.size());
   for (std::size_t c = 0; c < features.size(); ++c) {
     verdict[c] = judgeFeature(features[c], opt, exactSampling);
-    if (c < cornerPatch.size() && cornerPatch[c] &&
-        (verdict[c] == Verdict::LineAcrossChamfer || verdict[c] == Verdict::MostlyRefused))
+    if (c < cornerPatch.size() && cornerPatch[c] && placementLeft(verdict[c]))
       verdict[c] = Verdict::Restored;
   }
   for (std::size_t k = 0; k < plan.inserted.size() && !held.empty(); ++k)
@@ -924,7 +932,7 @@ class EvidenceGuard {
  private:
   /// One corner where three or more regions meet, placed whole: a corner
   /// feature, and the edges beside it that placement could not restore on
-  /// their own (edgeJoinsCorner: not edges but parts of the corner, as a
+  /// their own (placementLeft: not edges but parts of the corner, as a
   /// pyramid's two opposite faces, or a hexagonal pyramid's faces two apart,
   /// touch only at its apex). All its new vertices go to the one point all
   /// their sources' planes determine.
@@ -1018,17 +1026,9 @@ class EvidenceGuard {
     return solution.point;
   }
 
-  /// Whether edge feature `c`, judged `own` on its own evidence, may be part
-  /// of a corner: its planes meet across its chamfer, or placement refused
-  /// most of its moves (the line of two faces that touch only at a corner
-  /// runs off the solid past it).
-  static bool edgeJoinsCorner(Verdict own) {
-    return own == Verdict::LineAcrossChamfer || own == Verdict::MostlyRefused;
-  }
-
   /// Finds the corner patches (CornerPatch): the corner features restored on
   /// their own, with the edges beside them that may be part of a corner
-  /// (edgeJoinsCorner) and lie within reach of them, and the corners such
+  /// (placementLeft) and lie within reach of them, and the corners such
   /// edges share sources with, joined through their sources, where their
   /// planes fix one point (cornerPoint); and every other corner feature
   /// restored on its own whose vertices agree on one.
@@ -1044,8 +1044,7 @@ class EvidenceGuard {
       if (!m_.vert[moves_.firstInserted() + k].IsD())
         verticesOf_[featureOf_[k]].push_back(std::uint32_t(k));
     const auto candidate = [&](std::size_t c) {
-      return features_[c].corner ? own[c] == Verdict::Restored || own[c] == Verdict::MostlyRefused
-                                 : edgeJoinsCorner(own[c]);
+      return placementLeft(own[c]) || (features_[c].corner && own[c] == Verdict::Restored);
     };
     // An edge joins a corner when each of its vertices is within the reach
     // of the corner's own planes.
@@ -1062,8 +1061,11 @@ class EvidenceGuard {
     for (std::size_t c = 0; c < features_.size(); ++c)
       if (candidate(c))
         for (const std::uint32_t k : verticesOf_[c])
-          for (int i = 0; i < plan.inserted[k].originalCount; ++i)
-            featuresAt[plan.inserted[k].original[i]].push_back(std::uint32_t(c));
+          for (int i = 0; i < plan.inserted[k].originalCount; ++i) {
+            // Once per feature: a source serves several of a feature's vertices.
+            std::vector<std::uint32_t> &at = featuresAt[plan.inserted[k].original[i]];
+            if (at.empty() || at.back() != c) at.push_back(std::uint32_t(c));
+          }
     detail::DisjointSets cluster(features_.size());
     std::vector<char> clustered(features_.size(), 0);
     for (const std::vector<std::uint32_t> &at : featuresAt)
