@@ -409,3 +409,26 @@ TEST(PlanarRegions, FlatteningLeavesARegionThatRisesBeyondThePlanes) {
             1u);
   EXPECT_NEAR(t.m.vert[low].P()[2], 0, 1e-6);
 }
+
+// The grown planes' pass (flattenRoughPlanes): a vertex a better estimate of
+// its face's plane has placed (its region's core fit) is not moved onto the
+// plane it is labelled with now, while an unmarked one raised as much is; a
+// marked vertex bulged beyond a convex edge still goes behind both planes.
+TEST(PlanarRegions, FlatteningLeavesAVertexOnABetterPlaneOffItsLabelsPlane) {
+  EdgeField t(0.0);
+  const std::size_t marked = gridVertex(5, 8), unmarked = gridVertex(8, 8),
+                    bulged = gridVertex(21, 8);
+  ASSERT_TRUE(t.zones.inRegion[marked] && t.zones.inRegion[unmarked]);
+  t.m.vert[marked].P()[2] += 0.05;
+  t.m.vert[unmarked].P()[2] += 0.05;
+  t.zones.vertexLabel[bulged] = 0;
+  t.m.vert[bulged].P()[2] = 0.1;
+  std::vector<char> onBetterPlane(t.m.vert.size(), 0);
+  onBetterPlane[marked] = onBetterPlane[bulged] = 1;
+  EXPECT_EQ(es::flattenPlanarRegions(t.m, es::VertexFaceTable(t.m), t.zones,
+                                     t.zones.support.regionPlanes, 1e-6, 2 * kH, 1, onBetterPlane),
+            2u);
+  EXPECT_NEAR(t.m.vert[marked].P()[2], 0.05, 1e-9);
+  EXPECT_NEAR(t.m.vert[unmarked].P()[2], 0, 1e-6);
+  EXPECT_LT((es::positionOf(&t.m.vert[bulged]) - Vec3(kEdgeX, 8 * kH, 0)).Norm(), 1e-6);
+}

@@ -10,7 +10,7 @@ the input's / before's / after's max and RMS (% of the diagonal), and whether th
 than its input (max up or RMS up) when the before was not (NEWLY-WORSE).
 
 Run: /usr/bin/python3 bench/study/compare_builds.py BEFORE/apps/edge-sharpener \\
-         [--build build] [--shared ../shared/meshes]
+         [--build build] [--shared ../shared/meshes] [--match REGEX]
 (AFTER is --build's edge-sharpener; the cache is made by scripts/bench-quality.sh.)
 """
 import argparse
@@ -19,6 +19,7 @@ import glob
 import json
 import os
 import pathlib
+import re
 import subprocess
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
@@ -32,6 +33,8 @@ def main():
     parser.add_argument("--build", default=str(ROOT / "build"))
     parser.add_argument("--shared", default=str(ROOT.parent / "shared" / "meshes"))
     parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--match", default="",
+                        help="only the inputs whose file name this regular expression finds")
     args = parser.parse_args()
     build = pathlib.Path(args.build)
     cache = build / "quality-cache"
@@ -39,6 +42,7 @@ def main():
     tuning = set(json.load(open(ROOT / "bench" / "quality" / "split.json"))["tuning"])
     inputs = sorted(p for p in glob.glob(str(cache / "inputs" / "*.ply")) if "unsharp" not in p)
     inputs += sorted(glob.glob(str(cache / "generated" / "*_mc1.ply")))
+    inputs = [p for p in inputs if re.search(args.match, os.path.basename(p))]
 
     def model_of(path):
         name = os.path.basename(path)

@@ -5,6 +5,7 @@
 // one object; its counts in one EvidenceStats, read once by the report.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <tuple>
 #include <vector>
@@ -41,7 +42,11 @@ namespace detail {
 /// vertices (kGrownPlanesEvidence: the planes bulge as a fused scan's do; an
 /// exact mesh's planes move none), the same again on planes grown face by
 /// face (growPlanePatches), which the segmentation may have merged across a
-/// rounded edge. \return the number of vertices moved and of planes grown.
+/// rounded edge. A vertex labelled with a region that is a plane keeps it: its
+/// core's fit is the better estimate of the face, while a plane grown over
+/// the whole face takes in the rounding a reconstruction leaves along its
+/// edges; it may still go behind the grown planes of a convex edge or corner
+/// it bulges beyond. \return the number of vertices moved and of planes grown.
 template <class MeshType>
 std::pair<std::size_t, std::size_t> flattenRoughPlanes(MeshType &m, const FeatureZones &zones,
                                                        const SurfaceMeasures &surface,
@@ -66,7 +71,11 @@ std::pair<std::size_t, std::size_t> flattenRoughPlanes(MeshType &m, const Featur
     settings.maxTurnRad = settings.pairAngleRad = opt.rules.feature.minFeatureAngleRad;
     const PlanePatches patches = growPlanePatches(m, vf, spacing, settings);
     grown = patches.count();
-    flattenPlanarRegions(m, vf, patches.labels, patches.planes, minMove, maxMove, outward);
+    std::vector<char> onRegionPlane(m.vert.size(), 0);
+    for (std::size_t v = 0; v < std::min(zones.vertexLabel.size(), m.vert.size()); ++v)
+      onRegionPlane[v] = regionPlaneOf(zones.support.regionPlanes, zones.vertexLabel[v]) != nullptr;
+    flattenPlanarRegions(m, vf, patches.labels, patches.planes, minMove, maxMove, outward,
+                         onRegionPlane);
   }
   std::size_t moved = 0;
   for (std::size_t v = 0; v < m.vert.size(); ++v) moved += !(m.vert[v].cP() == input[v]);

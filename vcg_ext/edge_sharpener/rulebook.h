@@ -249,7 +249,9 @@ struct RoughInputRules {
   /// Planes nearer parallel than this meet on no edge.
   static constexpr double kFlattenParallelAngleRad = 5.0 * M_PI / 180.0;
   /// The share of the vertices flattening must move before planes grown face
-  /// by face are flattened too (the planes bulge as a fused scan's do).
+  /// by face are flattened too (the planes bulge as a fused scan's do); they
+  /// take the vertices of no planar region (a region's core fits its face
+  /// better than a plane grown over the rounding along its edges).
   static constexpr double kGrownPlanesEvidence = 0.01;
 };
 

@@ -351,11 +351,15 @@ std::optional<Vec3> behindConvexPlanes(const MeshType &m, const FeatureZones &zo
 /// around it (RoughInputRules::kFlattenCornerRings; detail::behindConvexPlanes). That point
 /// lies nearer every point of the solid behind them than the vertex did.
 /// Decided on the positions as they were. `vf`: the faces of each vertex of
-/// `m` as it is. \return the number moved.
+/// `m` as it is. `onBetterPlane`: per vertex, 1 when a better estimate of
+/// its face's plane has placed it already; it is then not moved onto the
+/// plane `zones` labels it with, only behind the convex planes around it
+/// (empty: none). \return the number moved.
 template <class MeshType>
 std::size_t flattenPlanarRegions(MeshType &m, const VertexFaceTable &vf, const FeatureZones &zones,
                                  const std::vector<Plane> &regionPlanes, double minMove,
-                                 double maxMove, int outward) {
+                                 double maxMove, int outward,
+                                 const std::vector<char> &onBetterPlane = {}) {
   using Scalar = typename MeshType::ScalarType;
   const std::int64_t nv = std::int64_t(detail::labelledVertices(m, zones));
   // Contiguous ranges of vertices decided on every core, each range's moves
@@ -379,7 +383,8 @@ std::size_t flattenPlanarRegions(MeshType &m, const VertexFaceTable &vf, const F
       const std::size_t v = std::size_t(vi);
       if (m.vert[v].IsD()) continue;
       const int r = zones.vertexLabel[v];
-      if (const Plane *own = regionPlaneOf(regionPlanes, r)) {
+      const bool placed = !onBetterPlane.empty() && onBetterPlane[v];
+      if (const Plane *own = placed ? nullptr : regionPlaneOf(regionPlanes, r)) {
         const Vec3 p = positionOf(&m.vert[v]);
         const double offset = own->normal * (p - own->point);
         if (!(outward * offset > minMove && std::abs(offset) <= maxMove)) continue;
