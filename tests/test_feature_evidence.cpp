@@ -655,3 +655,52 @@ TEST(FeatureEvidence, SheetCrossingsAreFoundInTheMesh) {
   EXPECT_EQ(crossedWhenMovedDownBy(0.03, 1.0), 0u);   // still nearer its own side
   EXPECT_EQ(crossedWhenMovedDownBy(0.07, -1.0), 0u);  // not moved
 }
+
+// A fillet the sampler did not make: an edge whose samples lie on an arc
+// wider, by more than the ambiguous width, than the arcs of the edges a grid
+// meets alike is left on the surface; as wide as those, it is restored.
+TEST(FeatureEvidence, AnArcWiderThanTheSamplersAtAlikeEdgesIsADesignedFillet) {
+  const es::SharpenOptions opt;
+  const es::Vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+  const auto edge = [&](es::Vec3 a, es::Vec3 b, double width, std::size_t samples,
+                        double rms = 0.02) {
+    es::Feature f = feature(10, 10);
+    f.flankNormals = {a, b};
+    f.filletWidthSpacings = width;
+    f.filletRmsSpacings = rms;
+    f.wedgeRmsSpacings = 0.3;  // samples off the sharp wedge
+    f.filletSamples = samples;
+    return f;
+  };
+  // A plate's top edges, sharp, and its bottom edges, filleted 2.4 spacings
+  // across: all four pairs of axis planes, alike to a grid.
+  std::vector<es::Feature> plate{edge(x, z, 0.3, 100), edge(-y, z, 0.1, 90), edge(x, -z, 2.4, 100),
+                                 edge(-y, -z, 2.4, 90)};
+  es::measurePeerRounding(plate);
+  EXPECT_EQ(es::judgeFeature(plate[0], opt), es::Verdict::Restored);
+  EXPECT_EQ(es::judgeFeature(plate[2], opt), es::Verdict::OnTheSurface);
+  EXPECT_EQ(es::judgeFeature(plate[3], opt), es::Verdict::OnTheSurface);
+  // A voxel remesher's rounding: every edge alike as wide: restored.
+  std::vector<es::Feature> voxels{edge(x, z, 2.3, 100), edge(-y, z, 2.4, 90), edge(x, -z, 2.4, 100),
+                                  edge(-y, -z, 2.2, 90)};
+  es::measurePeerRounding(voxels);
+  for (const es::Feature &f : voxels) EXPECT_EQ(es::judgeFeature(f, opt), es::Verdict::Restored);
+  // A sharp edge the grid meets otherwise says nothing of the arcs: alone
+  // in its kind, an arc is measured against itself.
+  const es::Vec3 oblique = es::Vec3(1, 1, 0).Normalize();
+  std::vector<es::Feature> mixed{edge(x, z, 0.0, 300), edge(oblique, z, 2.4, 100)};
+  es::measurePeerRounding(mixed);
+  EXPECT_EQ(es::judgeFeature(mixed[1], opt), es::Verdict::Restored);
+  // Samples no fillet fits tell nothing either; the rule can be turned off.
+  std::vector<es::Feature> unfit{edge(x, z, 0.3, 100), edge(x, -z, 2.4, 100, 0.3)};
+  es::measurePeerRounding(unfit);
+  EXPECT_EQ(es::judgeFeature(unfit[1], opt), es::Verdict::Restored);
+  // Samples the sharp wedge fits as well (a shallow edge, where any wide
+  // arc runs near its planes) tell nothing of a fillet.
+  es::Feature shallow = plate[2];
+  shallow.wedgeRmsSpacings = 0.05;
+  EXPECT_EQ(es::judgeFeature(shallow, opt), es::Verdict::Restored);
+  es::SharpenOptions off;
+  off.rules.feature.designedFilletMarginSpacings = 0;
+  EXPECT_EQ(es::judgeFeature(plate[2], off), es::Verdict::Restored);
+}

@@ -4,6 +4,7 @@
 #include <random>
 
 #include "edge_sharpener/util/curved_flank.h"
+#include "edge_sharpener/util/fillet_fit.h"
 #include "edge_sharpener/util/geometry.h"
 #include "edge_sharpener/util/qef.h"
 
@@ -578,4 +579,87 @@ TEST(CurvedFlank, MeetsAFlatCapOnACylindersRim) {
             1e-12);
   // Flanks that never meet: two parallel planes.
   EXPECT_FALSE(onBothFlanks(top, curvedFlank({Vec3(0, 0, 1), Vec3(0, 0, 1)}, {}, {}), rest, 1e-9));
+}
+
+// ----- util/fillet_fit.h: a feature's cross-section as a fillet
+
+namespace {
+/// `count` samples on a fillet of radius `r` between planes whose outward
+/// normals turn by `turnRad` (distances inside each plane), with `flat`
+/// samples on each plane beyond the arc's ends.
+std::vector<es::CrossSectionSample> filletSamples(double r, double turnRad, int count, int flat) {
+  // In the cross-section: plane A is y = 0 (solid below), plane B turned by
+  // turnRad; the fillet's centre lies r inside both.
+  const Vec3 nA(0, 1, 0), nB(std::sin(turnRad), std::cos(turnRad), 0);
+  const Vec3 bisector = (nA + nB) * (-1 / (nA + nB).Norm());
+  const Vec3 centre = bisector * (r / std::cos(turnRad / 2));
+  std::vector<es::CrossSectionSample> out;
+  for (int i = 0; i <= count; ++i) {
+    const double t = double(i) / count;
+    Vec3 n = nA * (1 - t) + nB * t;
+    n /= n.Norm();
+    const Vec3 p = centre + n * r;
+    out.push_back({-(p * nA), -(p * nB)});
+  }
+  // On each plane, beyond the tangent points.
+  const Vec3 alongA(1, 0, 0), alongB(std::cos(turnRad), -std::sin(turnRad), 0);
+  for (int i = 1; i <= flat; ++i) {
+    const Vec3 a = (centre + nA * r) - alongA * (0.5 * i),
+               b = (centre + nB * r) + alongB * (0.5 * i);
+    out.push_back({-(a * nA), -(a * nB)});
+    out.push_back({-(b * nA), -(b * nB)});
+  }
+  return out;
+}
+}  // namespace
+
+TEST(FilletFit, SamplesOnAFilletAreOnItsRoundedWedge) {
+  for (double turnDeg : {60.0, 90.0, 120.0}) {
+    const double turn = turnDeg * M_PI / 180, c = std::cos(turn);
+    for (const es::CrossSectionSample &s : filletSamples(1.7, turn, 8, 3))
+      EXPECT_NEAR(es::distanceToRoundedWedge(s, c, 1.7), 0.0, 1e-9) << turnDeg;
+    // The sharp wedge: a sample inside lies min(a, b) below it.
+    EXPECT_NEAR(es::distanceToRoundedWedge({0.3, 0.5}, c, 0.0), -0.3, 1e-12);
+    EXPECT_NEAR(es::distanceToRoundedWedge({0.0, 2.0}, c, 0.0), 0.0, 1e-12);
+  }
+  // A right angle's fillet is r * sqrt(2) across.
+  EXPECT_NEAR(es::filletWidth(1.0, 0.0), std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(es::filletWidth(1.0, -1.0), 2.0, 1e-12);
+}
+
+TEST(FilletFit, TheFitFindsTheRadiusAndTheSharpWedgeWhereSamplesLieOnThePlanes) {
+  for (double turnDeg : {50.0, 90.0, 130.0}) {
+    const double turn = turnDeg * M_PI / 180, c = std::cos(turn);
+    const es::FilletFit fit = es::fitFillet(filletSamples(1.7, turn, 6, 4), c, 8.0, 0.05);
+    EXPECT_NEAR(fit.radius, 1.7, 0.01) << turnDeg;
+    EXPECT_LT(fit.rms, 1e-3);
+    EXPECT_GT(fit.wedgeRms, 0.04);  // the arc off the wedge by up to 0.3 r
+    // Samples on the two planes only (a sampler that puts them on the surface
+    // of a sharp edge): every fillet narrower than their distance from the
+    // edge fits them alike, and the plainest, the sharp wedge, is taken.
+    std::vector<es::CrossSectionSample> onPlanes;
+    for (double d : {0.2, 0.9, 1.6, 2.3}) {
+      onPlanes.push_back({0.0, d * std::sin(turn)});
+      onPlanes.push_back({d * std::sin(turn), 0.0});
+    }
+    const es::FilletFit sharp = es::fitFillet(onPlanes, c, 8.0, 0.05);
+    EXPECT_EQ(sharp.radius, 0.0) << turnDeg;
+    EXPECT_LT(sharp.rms, 1e-9);
+    EXPECT_EQ(sharp.wedgeRms, sharp.rms);
+  }
+  EXPECT_EQ(es::fitFillet({}, 0.0, 8.0, 0.05).radius, 0.0);
+}
+
+TEST(FilletFit, AGridMeetsEdgesAlikeUpToItsSymmetries) {
+  const Vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+  const double minCos = std::cos(10 * M_PI / 180);
+  // Every edge of two axis planes is alike, whichever axes and sides.
+  EXPECT_TRUE(es::gridEquivalentEdges(x, z, -y, z, minCos));
+  EXPECT_TRUE(es::gridEquivalentEdges(x, z, z * -1, y, minCos));
+  // A plane at 30 degrees to an axis plane, against one at 45.
+  const Vec3 at30(std::cos(M_PI / 6), std::sin(M_PI / 6), 0);
+  const Vec3 at45(std::sqrt(0.5), std::sqrt(0.5), 0);
+  EXPECT_TRUE(es::gridEquivalentEdges(at30, z, Vec3(at30[1], at30[0], 0), -z, minCos));
+  EXPECT_FALSE(es::gridEquivalentEdges(at30, z, at45, z, minCos));
+  EXPECT_FALSE(es::gridEquivalentEdges(x, z, at45, z, minCos));
 }

@@ -16,6 +16,8 @@
 // nearest plane of the vertex's other sources (both in sample spacings), and
 // the feature's verdicts: a sampler's cut between two flanks lies as far from
 // either plane, a blend's sample absorbed by one flank's region nearer its own.
+// With both planes' signed distances and normals, each line is a sample of
+// the feature's cross-section (util/fillet_fit.h: the fillet study).
 //   evidence-study INPUT REFERENCE [CASE-NAME] [--vertices | --sources]
 #include <algorithm>
 #include <cmath>
@@ -51,22 +53,33 @@ void printSources(const std::string &name, const MeshType &m,
       const std::size_t s = source.original[i];
       const es::Plane &own = support.plane(s);
       if (own.normal.SquaredNorm() == 0 || !seen.insert({featureOf[k], s}).second) continue;
-      double other = -1;  // the nearest other source's plane; -1: none
+      double other = -1;       // the nearest other source's plane; -1: none
+      double otherCos = 1;     // the cosine of the angle between the two planes' normals
+      double otherSigned = 0;  // the signed distance from that plane (positive: along its normal)
+      es::Vec3 otherNormal(0, 0, 0);
       for (int j = 0; j < source.originalCount; ++j) {
         const es::Plane &pl = support.plane(source.original[j]);
         if (j == i || pl.normal.SquaredNorm() == 0) continue;
-        other = other < 0 ? offPlane(pl, s) : std::min(other, offPlane(pl, s));
+        if (other < 0 || offPlane(pl, s) < other) {
+          other = offPlane(pl, s);
+          otherCos = pl.normal * own.normal;
+          otherSigned = pl.normal * (moves.exactRest(s) - pl.point) / spacing;
+          otherNormal = pl.normal;
+        }
       }
       const es::Vec3 p = moves.exactRest(s);
       const std::uint32_t c = featureOf[k];
       std::printf(
           "{\"case\": \"%s\", \"feature\": %u, \"corner\": %d, \"weak\": %d, "
           "\"weak_otherwise\": %d, \"source\": %zu, \"region\": %d, \"off_plane\": %.4f, "
-          "\"off_other_plane\": %.4f, \"x\": [%.6g, %.6g, %.6g], \"normal\": [%.4f, %.4f, "
-          "%.4f]}\n",
+          "\"off_other_plane\": %.4f, \"planes_cos\": %.4f, \"own_signed\": %.4f, "
+          "\"other_signed\": %.4f, \"x\": [%.6g, %.6g, %.6g], \"normal\": [%.4f, %.4f, "
+          "%.4f], \"other_normal\": [%.4f, %.4f, %.4f]}\n",
           name.c_str(), c, int(features[c].corner), int(weak[c]), int(weakOtherwise[c]), s,
-          s < support.region.size() ? support.region[s] : -1, offPlane(own, s), other, p[0], p[1],
-          p[2], own.normal[0], own.normal[1], own.normal[2]);
+          s < support.region.size() ? support.region[s] : -1, offPlane(own, s), other, otherCos,
+          own.normal * (moves.exactRest(s) - own.point) / spacing, otherSigned, p[0], p[1], p[2],
+          own.normal[0], own.normal[1], own.normal[2], otherNormal[0], otherNormal[1],
+          otherNormal[2]);
     }
   }
 }

@@ -76,7 +76,7 @@ inline const char *toString(Placement p) {
 enum class Verdict : std::uint8_t {
   Restored,           ///< sharpened
   MeshEvidenceWeak,   ///< the whole mesh was left: too many moves refused, or already sharp
-  OnTheSurface,       ///< sampled exactly, half its samples off their planes: a designed bevel
+  OnTheSurface,       ///< its samples lie on the surface there: a designed bevel or fillet
   TooShort,           ///< fewer new vertices than a feature has
   ShallowAngle,       ///< its flanks meet at a shallow crease or a knife edge
   LineAcrossChamfer,  ///< its flanks' planes meet on a line across the chamfer, not along it
@@ -118,7 +118,7 @@ inline const char *describe(Verdict v) {
   switch (v) {
     case Verdict::Restored: return "restored";
     case Verdict::MeshEvidenceWeak: return "weak evidence over the whole mesh";
-    case Verdict::OnTheSurface: return "on the surface (designed bevel)";
+    case Verdict::OnTheSurface: return "on the surface (designed bevel or fillet)";
     case Verdict::TooShort: return "too short";
     case Verdict::ShallowAngle: return "shallow angle";
     case Verdict::LineAcrossChamfer: return "planes meet across it";

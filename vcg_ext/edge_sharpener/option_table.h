@@ -366,6 +366,12 @@ inline const std::vector<OptionSpec> &optionTable() {
        "(0: off).",
        T::Real, G::AutoFeature, "deg", 0, 90, false, kNotInMeshLab, {}, {},
        ES_ANGLE(rules.feature.maxFeatureLineChamferAngleRad)},
+      {"designed_fillet_margin_spacings", "--fillet-margin", "", "Designed fillet margin",
+       "Auto method: an edge stays as it was when its samples lie on one arc (a fillet fits "
+       "them) wider by more than this than the arcs the sampler leaves at the edges it meets "
+       "alike: a designed fillet, not the sampler's rounding (0: off).",
+       T::Real, G::AutoFeature, "median edge lengths", 0, 100, false, kNotInMeshLab, {}, {},
+       ES_REAL(rules.feature.designedFilletMarginSpacings)},
       // ----- auto method: each new vertex
       {"max_bent_move_spacings", "--bent-move", "", "Move across a bend",
        "Auto method: a new vertex the bend test (--bend-fraction) would keep at rest moves with "

@@ -206,6 +206,23 @@ struct FeatureRules {
   /// when that sheet is nearer and faces away: normals more than 120 degrees
   /// apart (cosine below this).
   static constexpr double kOtherSheetMaxCos = -0.5;
+  /// A feature is a designed fillet (`on_the_surface`) when a fillet fits its
+  /// samples across the edge and is wider by more than this than the fillet
+  /// the sampler leaves at the edges it meets alike: the ambiguous width,
+  /// within which the user decides (bench/quality/families.py). 0: off.
+  double designedFilletMarginSpacings = 1.5;
+  /// A fillet fits a feature's samples when their RMS distance to it is at
+  /// most this (and the designed one's lie farther from the sharp wedge).
+  static constexpr double kFilletFitRmsSpacings = 0.1;
+  /// The sampler's fillet: this quantile, weighted by samples, of the widths
+  /// of the edges a grid meets alike (a designed fillet only widens some)...
+  static constexpr double kPeerRoundingQuantile = 0.25;
+  /// ...whose flank normals some symmetry of the grid maps within this angle.
+  static constexpr double kGridAlikeAngleRad = 10.0 * M_PI / 180.0;
+  /// The fillets tried: radii up to this, on steps of this (refined tenfold
+  /// around the best).
+  static constexpr double kMaxFilletRadiusSpacings = 8.0;
+  static constexpr double kFilletRadiusStepSpacings = 0.05;
 };
 
 /// One new vertex of a feature kept.
@@ -309,6 +326,11 @@ inline const std::vector<FixedRule> &fixedRules() {
       {"FeatureRules::kOnPlaneQuantile", FeatureRules::kOnPlaneQuantile},
       {"FeatureRules::kMedianQuantile", FeatureRules::kMedianQuantile},
       {"FeatureRules::kOtherSheetMaxCos", FeatureRules::kOtherSheetMaxCos},
+      {"FeatureRules::kFilletFitRmsSpacings", FeatureRules::kFilletFitRmsSpacings},
+      {"FeatureRules::kPeerRoundingQuantile", FeatureRules::kPeerRoundingQuantile},
+      {"FeatureRules::kGridAlikeAngleRad", FeatureRules::kGridAlikeAngleRad * kDeg},
+      {"FeatureRules::kMaxFilletRadiusSpacings", FeatureRules::kMaxFilletRadiusSpacings},
+      {"FeatureRules::kFilletRadiusStepSpacings", FeatureRules::kFilletRadiusStepSpacings},
       {"VertexRules::kFoldPlaneSpacings", VertexRules::kFoldPlaneSpacings},
       {"VertexRules::kMaxFoldPatchFaces", double(VertexRules::kMaxFoldPatchFaces)},
       {"VertexRules::kFoldMaxCos", VertexRules::kFoldMaxCos},

@@ -36,6 +36,7 @@
 #include "../report.h"
 #include "../subdivision.h"
 #include "../util/disjoint_sets.h"
+#include "../util/fillet_fit.h"
 #include "../util/non_manifold.h"
 #include "../util/qef.h"
 #include "../util/statistics.h"
@@ -81,6 +82,20 @@ struct Feature {
   /// The median lift of its moves (moveLift; 1 when none moved): near 0
   /// where its vertices only slide along the input, already sharp there.
   double medianLift = 1;
+  /// Edge features: the fillet fitted to its sources across the edge
+  /// (fitFillet): its width across and the RMS of their distances to it, in
+  /// sample spacings; 0 where none has both planes...
+  double filletWidthSpacings = 0;
+  double filletRmsSpacings = 0;
+  double wedgeRmsSpacings = 0;  ///< ...and to the sharp wedge
+  /// ...whether the edge is concave, its two flanks' mean normals...
+  bool concave = false;
+  std::array<Vec3, 2> flankNormals{Vec3(0, 0, 0), Vec3(0, 0, 0)};
+  /// ...and the fillet width the sampler leaves at the edges it meets alike
+  /// (measurePeerRounding): where the feature's own is wider by more than
+  /// the ambiguous width, the arc is the surface's, not the sampler's.
+  double peerFilletWidthSpacings = 0;
+  std::size_t filletSamples = 0;  ///< the sources the fillet was fitted to
 };
 
 /// The angle (radians, in [0, pi/2]) at which two planes of unit normals
@@ -236,6 +251,138 @@ std::vector<std::vector<double>> sourceOffPlanes(const MeshType &m,
   return offPlane;
 }
 
+/// Per edge feature, the fillet fitted across it (Feature::filletWidthSpacings,
+/// ::filletRmsSpacings, ::concave, ::flankNormals, ::filletSamples): each of
+/// its sources once, as a cross-section sample between its own plane and the
+/// plane of the other source of an inserted vertex it serves. Sources of
+/// inserted vertices no longer in the mesh do not count.
+template <class MeshType>
+void measureFilletFits(const MeshType &m, const VertexMoves<MeshType> &moves,
+                       const SupportPlanes &support, const std::vector<std::uint32_t> &featureOf,
+                       std::vector<Feature> &features) {
+  const SplitPlan &plan = moves.plan();
+  const double unit = spacingUnit(support);
+  struct Sample {
+    std::uint32_t feature, source;
+    double own, other;  // signed distances from the two planes, along their normals
+    bool operator<(const Sample &o) const {
+      return feature != o.feature ? feature < o.feature : source < o.source;
+    }
+  };
+  std::vector<Sample> samples;
+  std::vector<std::vector<double>> cosines(features.size());
+  std::vector<std::array<Vec3, 2>> normalSums(features.size(), {Vec3(0, 0, 0), Vec3(0, 0, 0)});
+  for (std::size_t k = 0; k < featureOf.size(); ++k) {
+    const InsertedVertexSource &source = plan.inserted[k];
+    const std::uint32_t c = featureOf[k];
+    if (m.vert[moves.firstInserted() + k].IsD() || source.originalCount != 2 || features[c].corner)
+      continue;
+    const Plane *planes[2] = {&support.plane(source.original[0]),
+                              &support.plane(source.original[1])};
+    if (planes[0]->normal.SquaredNorm() == 0 || planes[1]->normal.SquaredNorm() == 0) continue;
+    cosines[c].push_back(planes[0]->normal * planes[1]->normal);
+    // Each flank's normals summed apart: the one nearer the first seen first.
+    std::array<Vec3, 2> &sum = normalSums[c];
+    const Vec3 &first = sum[0].SquaredNorm() > 0 ? sum[0] : planes[0]->normal;
+    const bool swap = planes[1]->normal * first > planes[0]->normal * first;
+    sum[0] += planes[swap ? 1 : 0]->normal;
+    sum[1] += planes[swap ? 0 : 1]->normal;
+    for (int i = 0; i < 2; ++i) {
+      const Vec3 p = moves.exactRest(source.original[i]);
+      const Plane &own = *planes[i], &other = *planes[1 - i];
+      samples.push_back({c, std::uint32_t(source.original[i]), own.normal * (p - own.point) / unit,
+                         other.normal * (p - other.point) / unit});
+    }
+  }
+  std::stable_sort(samples.begin(), samples.end());
+  samples.erase(std::unique(samples.begin(), samples.end(),
+                            [](const Sample &a, const Sample &b) { return !(a < b) && !(b < a); }),
+                samples.end());
+  for (std::size_t from = 0; from < samples.size();) {
+    const std::uint32_t c = samples[from].feature;
+    std::size_t to = from;
+    std::vector<double> others;
+    while (to < samples.size() && samples[to].feature == c) others.push_back(samples[to++].other);
+    Feature &f = features[c];
+    // A convex edge's sources lie inside the other flank's plane, a
+    // concave edge's outside it; the fillet rounds that side.
+    f.concave = detail::medianOf(others) > 0;
+    const double side = f.concave ? 1.0 : -1.0;
+    std::vector<CrossSectionSample> section;
+    for (std::size_t i = from; i < to; ++i)
+      section.push_back({side * samples[i].own, side * samples[i].other});
+    const double cosNormals = detail::medianOf(cosines[c]);
+    const FilletFit fit = fitFillet(section, cosNormals, FeatureRules::kMaxFilletRadiusSpacings,
+                                    FeatureRules::kFilletRadiusStepSpacings);
+    f.filletWidthSpacings = filletWidth(fit.radius, cosNormals);
+    f.filletRmsSpacings = fit.rms;
+    f.wedgeRmsSpacings = fit.wedgeRms;
+    f.filletSamples = section.size();
+    for (int i = 0; i < 2; ++i) f.flankNormals[i] = normalSums[c][i].Normalize();
+    from = to;
+  }
+}
+
+/// Per edge feature whose samples a fillet fits (Feature::filletRmsSpacings
+/// within FeatureRules::kFilletFitRmsSpacings), the fillet width the sampler
+/// leaves at the edges it meets alike (Feature::peerFilletWidthSpacings): the
+/// lower quartile, weighted by samples, of the widths of the edge features
+/// of its side (convex or concave) that a fillet fits too and a grid meets
+/// alike (gridEquivalentEdges), itself included. A sampler rounds such edges
+/// the same up to where they lie between its nodes; a designed fillet only
+/// widens some. Pure.
+inline void measurePeerRounding(std::vector<Feature> &features) {
+  const double minCos = std::cos(FeatureRules::kGridAlikeAngleRad);
+  const auto explained = [](const Feature &f) {
+    return !f.corner && f.filletSamples > 0 &&
+           f.filletRmsSpacings <= FeatureRules::kFilletFitRmsSpacings;
+  };
+  // The sorted absolute components of each normal, which the cube's
+  // symmetries keep: a quick test before trying them.
+  const auto sortedAbs = [](const Vec3 &n) {
+    std::array<double, 3> a{std::abs(n[0]), std::abs(n[1]), std::abs(n[2])};
+    std::sort(a.begin(), a.end());
+    return a;
+  };
+  const double slack = std::sqrt(2 * (1 - minCos));  // a chord of the angle
+  const auto near = [&](const std::array<double, 3> &a, const std::array<double, 3> &b) {
+    for (int i = 0; i < 3; ++i)
+      if (std::abs(a[i] - b[i]) > slack) return false;
+    return true;
+  };
+  std::vector<std::array<std::array<double, 3>, 2>> keys(features.size());
+  for (std::size_t c = 0; c < features.size(); ++c)
+    keys[c] = {sortedAbs(features[c].flankNormals[0]), sortedAbs(features[c].flankNormals[1])};
+  for (std::size_t c = 0; c < features.size(); ++c) {
+    Feature &f = features[c];
+    f.peerFilletWidthSpacings = f.filletWidthSpacings;
+    if (!explained(f)) continue;
+    std::vector<std::pair<double, std::size_t>> peers;  // (width, samples)
+    std::size_t total = 0;
+    for (std::size_t d = 0; d < features.size(); ++d) {
+      const Feature &g = features[d];
+      if (!explained(g) || g.concave != f.concave) continue;
+      const bool keysMatch = (near(keys[c][0], keys[d][0]) && near(keys[c][1], keys[d][1])) ||
+                             (near(keys[c][0], keys[d][1]) && near(keys[c][1], keys[d][0]));
+      if (d != c &&
+          (!keysMatch || !gridEquivalentEdges(f.flankNormals[0], f.flankNormals[1],
+                                              g.flankNormals[0], g.flankNormals[1], minCos)))
+        continue;
+      peers.emplace_back(g.filletWidthSpacings, g.filletSamples);
+      total += g.filletSamples;
+    }
+    std::sort(peers.begin(), peers.end());
+    std::size_t below = 0;
+    for (const auto &[width, samples] : peers) {
+      below += samples;
+      if (double(below) >= FeatureRules::kPeerRoundingQuantile * double(total)) {
+        f.peerFilletWidthSpacings = width;
+        break;
+      }
+    }
+  }
+}
+
 /// Counts, per feature, its inserted vertices still in the mesh and those
 /// placed on their planes (Feature::vertices, Feature::moved). A vertex
 /// moved across a bending flank (MeshLabels::bentFlank) counts as refused:
@@ -292,6 +439,8 @@ void measureFeatures(const MeshType &m, const VertexMoves<MeshType> &moves,
     features[c].flankAngleRad = angles[c].empty() ? M_PI / 2 : detail::medianOf(angles[c]);
     features[c].lineChamferAngleRad = lineAngles[c].empty() ? 0 : detail::medianOf(lineAngles[c]);
   }
+  measureFilletFits(m, moves, support, featureOf, features);
+  measurePeerRounding(features);
 }
 
 /// Per inserted vertex (split plan order), the lift of its move (moveLift,
@@ -448,21 +597,35 @@ inline bool offPlaneIsSurface(double offPlaneSpacings, const SharpenOptions &opt
          offPlaneSpacings > opt.rules.feature.onPlaneSpacings;
 }
 
+/// Whether an edge feature's samples lie on one arc (a fillet fits them
+/// within FeatureRules::kFilletFitRmsSpacings, the sharp wedge does not)
+/// wider by more than
+/// opt.rules.feature.designedFilletMarginSpacings than the arcs the sampler
+/// leaves at the edges it meets alike (Feature::peerFilletWidthSpacings): a
+/// fillet of the surface, not the sampler's rounding. Pure.
+inline bool isDesignedFillet(const Feature &f, const SharpenOptions &opt) {
+  const double margin = opt.rules.feature.designedFilletMarginSpacings;
+  return margin > 0 && !f.corner && f.filletSamples > 0 &&
+         f.filletRmsSpacings <= FeatureRules::kFilletFitRmsSpacings &&
+         f.wedgeRmsSpacings > FeatureRules::kFilletFitRmsSpacings &&
+         f.filletWidthSpacings > f.peerFilletWidthSpacings + margin;
+}
+
 /// The judgement of one feature on its own evidence (Verdict::Restored, or
 /// the first rule it fails, in this order): on a mesh sampled exactly
 /// (sampledExactly), half of its samples off their planes (the surface runs
-/// there: a designed bevel or blend); too short to be a feature; an edge
-/// whose flanks meet at too shallow an angle, or on a line that crosses its
-/// chamfer instead of running along it; one of its samples far off the plane
-/// its flank extrapolates, unless nine in ten of them lie on their planes, or
-/// half of them do and none lies much farther, both bounds times the sine of
-/// the angle its flanks meet at (then only the far samples' new vertices stay
-/// at rest: EvidenceGuard::vertexIsWeak); most of its vertices refused by the
-/// other tests. Pure.
+/// there: a designed bevel or blend), or, on any mesh, its samples on an arc
+/// wider than the sampler's (isDesignedFillet: a designed fillet); too short to be a feature; an
+/// edge whose flanks meet at too shallow an angle, or on a line that crosses its chamfer instead of
+/// running along it; one of its samples far off the plane its flank extrapolates, unless nine in
+/// ten of them lie on their planes, or half of them do and none lies much farther, both bounds
+/// times the sine of the angle its flanks meet at (then only the far samples' new vertices stay at
+/// rest: EvidenceGuard::vertexIsWeak); most of its vertices refused by the other tests. Pure.
 inline Verdict judgeFeature(const Feature &f, const SharpenOptions &opt,
                             bool exactSampling = false) {
   const FeatureRules &rule = opt.rules.feature;
-  if (offPlaneIsSurface(f.offPlaneMedian, opt, exactSampling)) return Verdict::OnTheSurface;
+  if (offPlaneIsSurface(f.offPlaneMedian, opt, exactSampling) || isDesignedFillet(f, opt))
+    return Verdict::OnTheSurface;
   if (!f.corner && f.vertices < std::size_t(rule.minFeatureVertices)) return Verdict::TooShort;
   if (!f.corner && f.flankAngleRad < rule.minFeatureAngleRad) return Verdict::ShallowAngle;
   if (!f.corner && rule.maxFeatureLineChamferAngleRad > 0 &&
