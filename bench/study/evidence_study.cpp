@@ -57,17 +57,18 @@ void printSources(const std::string &name, const MeshType &m,
       double otherCos = 1;     // the cosine of the angle between the two planes' normals
       double otherSigned = 0;  // the signed distance from that plane (positive: along its normal)
       es::Vec3 otherNormal(0, 0, 0);
+      const es::Vec3 p = moves.exactRest(s);
       for (int j = 0; j < source.originalCount; ++j) {
         const es::Plane &pl = support.plane(source.original[j]);
         if (j == i || pl.normal.SquaredNorm() == 0) continue;
-        if (other < 0 || offPlane(pl, s) < other) {
-          other = offPlane(pl, s);
+        const double signedDistance = pl.normal * (p - pl.point) / spacing;
+        if (other < 0 || std::abs(signedDistance) < other) {
+          other = std::abs(signedDistance);
           otherCos = pl.normal * own.normal;
-          otherSigned = pl.normal * (moves.exactRest(s) - pl.point) / spacing;
+          otherSigned = signedDistance;
           otherNormal = pl.normal;
         }
       }
-      const es::Vec3 p = moves.exactRest(s);
       const std::uint32_t c = featureOf[k];
       std::printf(
           "{\"case\": \"%s\", \"feature\": %u, \"corner\": %d, \"weak\": %d, "
@@ -77,9 +78,8 @@ void printSources(const std::string &name, const MeshType &m,
           "%.4f], \"other_normal\": [%.4f, %.4f, %.4f]}\n",
           name.c_str(), c, int(features[c].corner), int(weak[c]), int(weakOtherwise[c]), s,
           s < support.region.size() ? support.region[s] : -1, offPlane(own, s), other, otherCos,
-          own.normal * (moves.exactRest(s) - own.point) / spacing, otherSigned, p[0], p[1], p[2],
-          own.normal[0], own.normal[1], own.normal[2], otherNormal[0], otherNormal[1],
-          otherNormal[2]);
+          own.normal * (p - own.point) / spacing, otherSigned, p[0], p[1], p[2], own.normal[0],
+          own.normal[1], own.normal[2], otherNormal[0], otherNormal[1], otherNormal[2]);
     }
   }
 }

@@ -323,8 +323,15 @@ void measureFilletFits(const MeshType &m, const VertexMoves<MeshType> &moves,
   }
 }
 
-/// Per edge feature whose samples a fillet fits (Feature::filletRmsSpacings
-/// within FeatureRules::kFilletFitRmsSpacings), the fillet width the sampler
+/// Whether a fillet fits an edge feature's samples (fitFillet, measured by
+/// measureFilletFits): their RMS distance to it within
+/// FeatureRules::kFilletFitRmsSpacings. Pure.
+inline bool filletFits(const Feature &f) {
+  return !f.corner && f.filletSamples > 0 &&
+         f.filletRmsSpacings <= FeatureRules::kFilletFitRmsSpacings;
+}
+
+/// Per edge feature whose samples a fillet fits (filletFits), the fillet width the sampler
 /// leaves at the edges it meets alike (Feature::peerFilletWidthSpacings): the
 /// lower quartile, weighted by samples, of the widths of the edge features
 /// of its side (convex or concave) that a fillet fits too and a grid meets
@@ -333,10 +340,6 @@ void measureFilletFits(const MeshType &m, const VertexMoves<MeshType> &moves,
 /// widens some. Pure.
 inline void measurePeerRounding(std::vector<Feature> &features) {
   const double minCos = std::cos(FeatureRules::kGridAlikeAngleRad);
-  const auto explained = [](const Feature &f) {
-    return !f.corner && f.filletSamples > 0 &&
-           f.filletRmsSpacings <= FeatureRules::kFilletFitRmsSpacings;
-  };
   // The sorted absolute components of each normal, which the cube's
   // symmetries keep: a quick test before trying them.
   const auto sortedAbs = [](const Vec3 &n) {
@@ -356,12 +359,12 @@ inline void measurePeerRounding(std::vector<Feature> &features) {
   for (std::size_t c = 0; c < features.size(); ++c) {
     Feature &f = features[c];
     f.peerFilletWidthSpacings = f.filletWidthSpacings;
-    if (!explained(f)) continue;
+    if (!filletFits(f)) continue;
     std::vector<std::pair<double, std::size_t>> peers;  // (width, samples)
     std::size_t total = 0;
     for (std::size_t d = 0; d < features.size(); ++d) {
       const Feature &g = features[d];
-      if (!explained(g) || g.concave != f.concave) continue;
+      if (!filletFits(g) || g.concave != f.concave) continue;
       const bool keysMatch = (near(keys[c][0], keys[d][0]) && near(keys[c][1], keys[d][1])) ||
                              (near(keys[c][0], keys[d][1]) && near(keys[c][1], keys[d][0]));
       if (d != c &&
@@ -597,17 +600,14 @@ inline bool offPlaneIsSurface(double offPlaneSpacings, const SharpenOptions &opt
          offPlaneSpacings > opt.rules.feature.onPlaneSpacings;
 }
 
-/// Whether an edge feature's samples lie on one arc (a fillet fits them
-/// within FeatureRules::kFilletFitRmsSpacings, the sharp wedge does not)
-/// wider by more than
+/// Whether an edge feature's samples lie on one arc (filletFits; the sharp
+/// wedge does not fit them as closely) wider by more than
 /// opt.rules.feature.designedFilletMarginSpacings than the arcs the sampler
 /// leaves at the edges it meets alike (Feature::peerFilletWidthSpacings): a
 /// fillet of the surface, not the sampler's rounding. Pure.
 inline bool isDesignedFillet(const Feature &f, const SharpenOptions &opt) {
   const double margin = opt.rules.feature.designedFilletMarginSpacings;
-  return margin > 0 && !f.corner && f.filletSamples > 0 &&
-         f.filletRmsSpacings <= FeatureRules::kFilletFitRmsSpacings &&
-         f.wedgeRmsSpacings > FeatureRules::kFilletFitRmsSpacings &&
+  return margin > 0 && filletFits(f) && f.wedgeRmsSpacings > FeatureRules::kFilletFitRmsSpacings &&
          f.filletWidthSpacings > f.peerFilletWidthSpacings + margin;
 }
 
@@ -615,12 +615,14 @@ inline bool isDesignedFillet(const Feature &f, const SharpenOptions &opt) {
 /// the first rule it fails, in this order): on a mesh sampled exactly
 /// (sampledExactly), half of its samples off their planes (the surface runs
 /// there: a designed bevel or blend), or, on any mesh, its samples on an arc
-/// wider than the sampler's (isDesignedFillet: a designed fillet); too short to be a feature; an
-/// edge whose flanks meet at too shallow an angle, or on a line that crosses its chamfer instead of
-/// running along it; one of its samples far off the plane its flank extrapolates, unless nine in
-/// ten of them lie on their planes, or half of them do and none lies much farther, both bounds
-/// times the sine of the angle its flanks meet at (then only the far samples' new vertices stay at
-/// rest: EvidenceGuard::vertexIsWeak); most of its vertices refused by the other tests. Pure.
+/// wider than the sampler's (isDesignedFillet: a designed fillet); too short
+/// to be a feature; an edge whose flanks meet at too shallow an angle, or on
+/// a line that crosses its chamfer instead of running along it; one of its
+/// samples far off the plane its flank extrapolates, unless nine in ten of
+/// them lie on their planes, or half of them do and none lies much farther,
+/// both bounds times the sine of the angle its flanks meet at (then only the
+/// far samples' new vertices stay at rest: EvidenceGuard::vertexIsWeak); most
+/// of its vertices refused by the other tests. Pure.
 inline Verdict judgeFeature(const Feature &f, const SharpenOptions &opt,
                             bool exactSampling = false) {
   const FeatureRules &rule = opt.rules.feature;

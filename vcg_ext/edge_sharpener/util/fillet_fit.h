@@ -62,8 +62,7 @@ struct FilletFit {
 /// edge, and the sharp wedge is the plainer model). Empty samples: radius 0.
 inline FilletFit fitFillet(const std::vector<CrossSectionSample> &samples, double cosNormals,
                            double maxRadius, double step) {
-  FilletFit best;
-  if (samples.empty() || !(step > 0)) return best;
+  if (samples.empty() || !(step > 0)) return {};
   const auto meanSquare = [&](double r) {
     double sum = 0;
     for (const CrossSectionSample &s : samples) {
@@ -72,21 +71,22 @@ inline FilletFit fitFillet(const std::vector<CrossSectionSample> &samples, doubl
     }
     return sum / double(samples.size());
   };
+  const double wedge = meanSquare(0.0);
+  double bestRadius = 0, bestMeanSquare = wedge;
   const auto scan = [&](double from, double to, double by) {
     for (double r = from; r <= to + 1e-12; r += by) {
       const double e = meanSquare(r);
       // A fit better by a relative 1e-9 only is the same fit.
-      if (e < best.rms * (1 - 1e-9)) best = {r, e};
+      if (e < bestMeanSquare * (1 - 1e-9)) {
+        bestRadius = r;
+        bestMeanSquare = e;
+      }
     }
   };
-  const double wedge = meanSquare(0.0);
-  best = {0.0, wedge};
   scan(step, maxRadius, step);
-  const double coarse = best.radius;
+  const double coarse = bestRadius;
   scan(std::max(0.0, coarse - step), std::min(maxRadius, coarse + step), step / 10);
-  best.rms = std::sqrt(best.rms);
-  best.wedgeRms = std::sqrt(wedge);
-  return best;
+  return {bestRadius, std::sqrt(bestMeanSquare), std::sqrt(wedge)};
 }
 
 /// Whether a grid sampler meets two edges alike: some symmetry of the cube
