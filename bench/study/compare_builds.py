@@ -11,7 +11,7 @@ than its input (max up or RMS up) when the before was not (NEWLY-WORSE).
 
 Run: /usr/bin/python3 bench/study/compare_builds.py BEFORE/apps/edge-sharpener \\
          [--build build] [--shared ../shared/meshes] [--match REGEX]
-(AFTER is --build's edge-sharpener; the cache is made by scripts/bench-quality.sh.)
+(AFTER is --after, or --build's edge-sharpener; the cache is made by scripts/bench-quality.sh.)
 """
 import argparse
 import filecmp
@@ -31,6 +31,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("before", help="the other build's edge-sharpener")
     parser.add_argument("--build", default=str(ROOT / "build"))
+    parser.add_argument("--after", help="the edge-sharpener to compare (default: --build's)")
     parser.add_argument("--shared", default=str(ROOT.parent / "shared" / "meshes"))
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--match", default="",
@@ -39,6 +40,8 @@ def main():
     build = pathlib.Path(args.build)
     cache = build / "quality-cache"
     after, distance = build / "apps" / "edge-sharpener", build / "apps" / "mesh-distance"
+    if args.after:
+        after = pathlib.Path(args.after)
     tuning = set(json.load(open(ROOT / "bench" / "quality" / "split.json"))["tuning"])
     inputs = sorted(p for p in glob.glob(str(cache / "inputs" / "*.ply")) if "unsharp" not in p)
     inputs += sorted(glob.glob(str(cache / "generated" / "*_mc1.ply")))

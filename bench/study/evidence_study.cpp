@@ -267,12 +267,14 @@ int main(int argc, char **argv) {
           "\"max_off_plane\": %.4f, \"median_displacement\": %.4f, "
           "\"median_lift\": %.4f, \"weak\": %d, \"harm_sum\": %.5f, \"harm_max\": %.5f, "
           "\"before_sum\": %.5f, \"flank_angle_deg\": %.2f, \"line_chamfer_angle_deg\": %.2f, "
-          "\"crossed\": %zu}\n",
+          "\"crossed\": %zu, \"fillet_width\": %.3f, \"fillet_rms\": %.4f, \"wedge_rms\": %.4f, "
+          "\"peer_fillet_width\": %.3f, \"concave\": %d}\n",
           name.c_str(), refused, judged.stats.medianLift, judged.stats.noiseSpacings,
           judged.stats.planarFraction, c, int(f.corner), f.vertices, f.moved, f.maxOffPlane,
           es::detail::medianOf(moveLengths[c]), es::medianLift(featureLifts[c]), int(weak[c]),
           sum[c], worst[c], before[c], f.flankAngleRad * 180 / M_PI,
-          f.lineChamferAngleRad * 180 / M_PI, f.crossed);
+          f.lineChamferAngleRad * 180 / M_PI, f.crossed, f.filletWidthSpacings, f.filletRmsSpacings,
+          f.wedgeRmsSpacings, f.peerFilletWidthSpacings, int(f.concave));
     }
   } catch (const std::exception &e) {
     std::cerr << "evidence-study: " << e.what() << "\n";
