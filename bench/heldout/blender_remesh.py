@@ -145,6 +145,17 @@ NOTES = """What it found (diagnosed by hand):
   width: abc6 by the voxel remesher at 1% reads 0.312% -> 0.316% (+1.3%), not worse; the
   worse outputs left with no designed feature that narrow are plate_holes' fillet (voxel 1%,
   QuadriFlow), tube's facets (Smooth mode) and rocker-arm (QuadriFlow).
+- The designed-fillet rule (2026-12-05, chosen on the benchmark's tuning half;
+  `--fillet-margin`), first run here on 2026-12-06: plate_holes at voxel 1% is no longer
+  worse (RMS 0.103% -> 0.0446%, its input 0.0485%), and QuadriFlow's plate_holes RMS 0.0499%
+  -> 0.0334% (max still worse). But cylinder_block (tuning half, no designed feature) in
+  Smooth mode lost its gain: max 0.146% -> 1.13% (its input's), RMS 0.0072% -> 0.0889% (its
+  input 0.104%). The octree's phase leaves five of its axis-parallel edges sharp and rounds
+  eight others into clean arcs 2.0-2.2 spacings across; the rule takes those for designed
+  fillets beside sharp edges a grid meets alike, as it does plate_holes' fillet beside its
+  top edges under the projected voxel remesh. Widths alone cannot tell a 2.4-spacing fillet
+  from a sampler's 2.2-spacing rounding. Not worse than its input (the report lists the eight
+  edges as on the surface); `--fillet-margin 0` sharpens them (0.146%).
 """
 # Run by Blender: blender -b --python-expr IN_BLENDER -- IN.npz OUT.npz voxel SIZE
 #                                                      -- IN.npz OUT.npz smooth DEPTH
