@@ -9,16 +9,17 @@ the mesh alone cannot tell from them.
 Run: /usr/bin/python3 bench/study/chamfer_depth.py MESH... [--build build]
      [--shared ../shared/meshes]
 A mesh is named REFERENCE__anything.ply (the quality benchmark's and the held-out checks'
-naming); its reference is looked up as compare_builds.py does.
+naming); its reference is looked up by evidence_study.references.
 """
 import argparse
-import glob
 import json
 import os
 import pathlib
 import statistics
 import subprocess
 from collections import defaultdict
+
+from evidence_study import references
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
@@ -32,15 +33,8 @@ def main():
                     help="leave out features with fewer source samples")
     args = ap.parse_args()
     study = os.path.join(args.build, "bench", "study", "evidence-study")
-    generated = os.path.join(args.build, "quality-cache", "generated")
 
-    def reference(model):
-        for p in ([os.path.join(generated, f"{model}_reference.ply")] +
-                  glob.glob(str(ROOT / "test_meshes" / "real" / f"{model}.*")) +
-                  glob.glob(os.path.join(args.shared, f"{model}.*"))):
-            if os.path.exists(p) and not p.endswith(".md"):
-                return p
-        return None
+    refs = references(os.path.join(args.build, "quality-cache"), args.shared)
 
     def lines(*cmd):
         out = subprocess.run(cmd, capture_output=True, text=True).stdout
@@ -49,7 +43,7 @@ def main():
     rows = []
     for mesh in args.meshes:
         name = os.path.basename(mesh)
-        ref = reference(name.split("__")[0])
+        ref = refs.get(name.split("__")[0])
         if ref is None:
             print(f"# {name}: no reference found")
             continue

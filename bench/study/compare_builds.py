@@ -10,7 +10,7 @@ the input's / before's / after's max and RMS (% of the diagonal), and whether th
 than its input (max up or RMS up) when the before was not (NEWLY-WORSE).
 
 Run: /usr/bin/python3 bench/study/compare_builds.py BEFORE/apps/edge-sharpener \\
-         [--build build] [--shared ../shared/meshes] [--match REGEX]
+         [--after AFTER] [--build build] [--shared ../shared/meshes] [--match REGEX]
 (AFTER is --after, or --build's edge-sharpener; the cache is made by scripts/bench-quality.sh.)
 """
 import argparse
@@ -23,6 +23,8 @@ import re
 import subprocess
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
+
+from evidence_study import references
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
@@ -39,9 +41,8 @@ def main():
     args = parser.parse_args()
     build = pathlib.Path(args.build)
     cache = build / "quality-cache"
-    after, distance = build / "apps" / "edge-sharpener", build / "apps" / "mesh-distance"
-    if args.after:
-        after = pathlib.Path(args.after)
+    after = pathlib.Path(args.after) if args.after else build / "apps" / "edge-sharpener"
+    distance = build / "apps" / "mesh-distance"
     tuning = set(json.load(open(ROOT / "bench" / "quality" / "split.json"))["tuning"])
     inputs = sorted(p for p in glob.glob(str(cache / "inputs" / "*.ply")) if "unsharp" not in p)
     inputs += sorted(glob.glob(str(cache / "generated" / "*_mc1.ply")))
@@ -51,13 +52,7 @@ def main():
         name = os.path.basename(path)
         return name.split("__")[0] if "__" in name else name[:-len("_mc1.ply")]
 
-    def reference(model):
-        for p in ([str(cache / "generated" / f"{model}_reference.ply")] +
-                  glob.glob(str(ROOT / "test_meshes" / "real" / f"{model}.*")) +
-                  glob.glob(os.path.join(args.shared, f"{model}.*"))):
-            if os.path.exists(p) and not p.endswith(".md"):
-                return p
-        return None
+    refs = references(str(cache), args.shared)
 
     def measure(mesh, ref, samples=100000):
         out = subprocess.run([distance, "--json", "--sampling", "meshlab", "--samples",
@@ -66,7 +61,7 @@ def main():
         return d["max_percent"], d["rms_percent"]
 
     def compare(path, tmp):
-        ref = reference(model_of(path))
+        ref = refs.get(model_of(path))
         stem = os.path.join(tmp, os.path.basename(path))
         a, b = stem + ".before.ply", stem + ".after.ply"
         ra = subprocess.run([args.before, "-q", path, a], capture_output=True).returncode
