@@ -2,10 +2,12 @@
 sharpener's --skip-faces (or --only-faces): the faces whose centroid lies within DISTANCE of
 the reference's faces whose normal turns ANGLE degrees (within TOLERANCE) from an axis.
 For references whose designed feature is such a family of faces (abc6's 45-degree conical
-chamfer: --angle 45), where the generator's own designed-face lists do not reach.
+chamfer: --angle 45), where the generator's own designed-face lists do not reach. With
+--within X,Y,Z,R (repeatable), only the reference's faces within R of one of those points
+count (octa-flower17k's petal-tip facets: designed.json).
 
 Usage: /usr/bin/python3 bench/study/designed_faces_near.py REF MESH OUT --distance D
-       [--angle 45] [--tolerance 5] [--axis z]
+       [--angle 45] [--tolerance 5] [--axis z] [--within X,Y,Z,R ...]
 """
 import argparse
 import sys
@@ -24,7 +26,15 @@ def main():
     ap.add_argument("--angle", type=float, default=45.0, help="degrees from the axis")
     ap.add_argument("--tolerance", type=float, default=5.0, help="degrees")
     ap.add_argument("--axis", choices="xyz", default="z")
+    ap.add_argument("--within", action="append", default=[], metavar="X,Y,Z,R",
+                    help="only the reference's faces within R of this point (repeatable)")
     args = ap.parse_args()
+    try:
+        spheres = [tuple(float(x) for x in w.split(",")) for w in args.within]
+    except ValueError:
+        spheres = [()]
+    if any(len(w) != 4 for w in spheres):
+        sys.exit("designed_faces_near: --within takes X,Y,Z,R")
     try:
         import open3d as o3d
         from scipy.spatial import cKDTree
@@ -35,6 +45,12 @@ def main():
     normals = np.asarray(ref.triangle_normals)
     tilt = np.degrees(np.arccos(np.clip(np.abs(normals[:, "xyz".index(args.axis)]), 0, 1)))
     designed = np.abs(tilt - args.angle) <= args.tolerance
+    if spheres:
+        ref_centroids = np.asarray(ref.vertices)[np.asarray(ref.triangles)].mean(axis=1)
+        inside = np.zeros(len(designed), dtype=bool)
+        for x, y, z, r in spheres:
+            inside |= np.linalg.norm(ref_centroids - np.array([x, y, z]), axis=1) <= r
+        designed &= inside
     if not designed.any():
         sys.exit("designed_faces_near: no reference face turns that far from the axis")
     # Points on the designed faces, spaced well under --distance.
@@ -51,7 +67,8 @@ def main():
     faces = np.flatnonzero(near <= args.distance)
     with open(args.out, "w") as f:
         f.write(f"# faces within {args.distance:g} of the reference's faces turned "
-                f"{args.angle:g} +- {args.tolerance:g} degrees from {args.axis}\n")
+                f"{args.angle:g} +- {args.tolerance:g} degrees from {args.axis}"
+                + "".join(f", within {w}" for w in args.within) + "\n")
         f.write("\n".join(map(str, faces)) + "\n")
     print(f"{len(faces)} of {len(centroids)} faces written to {args.out}")
 
