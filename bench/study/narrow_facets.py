@@ -108,7 +108,12 @@ def main():
     args = ap.parse_args()
     v, t, n = read(args.reference)
     centroids = v[t].mean(axis=1)
-    spheres = [tuple(float(x) for x in w.split(",")) for w in args.within]
+    try:
+        spheres = [tuple(float(x) for x in w.split(",")) for w in args.within]
+    except ValueError:
+        spheres = [()]
+    if any(len(w) != 4 for w in spheres):
+        sys.exit("narrow_facets: --within takes X,Y,Z,R")
     found = []
     for members in facets(v, t, n, args.angle):
         if len(members) < args.min_faces:
