@@ -14,6 +14,8 @@ import sys
 
 import numpy as np
 
+import within
+
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
@@ -26,15 +28,9 @@ def main():
     ap.add_argument("--angle", type=float, default=45.0, help="degrees from the axis")
     ap.add_argument("--tolerance", type=float, default=5.0, help="degrees")
     ap.add_argument("--axis", choices="xyz", default="z")
-    ap.add_argument("--within", action="append", default=[], metavar="X,Y,Z,R",
-                    help="only the reference's faces within R of this point (repeatable)")
+    within.add_option(ap, "only the reference's faces within R of this point (repeatable)")
     args = ap.parse_args()
-    try:
-        spheres = [tuple(float(x) for x in w.split(",")) for w in args.within]
-    except ValueError:
-        spheres = [()]
-    if any(len(w) != 4 for w in spheres):
-        sys.exit("designed_faces_near: --within takes X,Y,Z,R")
+    spheres = within.spheres(args, "designed_faces_near")
     try:
         import open3d as o3d
         from scipy.spatial import cKDTree
@@ -46,11 +42,8 @@ def main():
     tilt = np.degrees(np.arccos(np.clip(np.abs(normals[:, "xyz".index(args.axis)]), 0, 1)))
     designed = np.abs(tilt - args.angle) <= args.tolerance
     if spheres:
-        ref_centroids = np.asarray(ref.vertices)[np.asarray(ref.triangles)].mean(axis=1)
-        inside = np.zeros(len(designed), dtype=bool)
-        for x, y, z, r in spheres:
-            inside |= np.linalg.norm(ref_centroids - np.array([x, y, z]), axis=1) <= r
-        designed &= inside
+        designed &= within.inside(
+            np.asarray(ref.vertices)[np.asarray(ref.triangles)].mean(axis=1), spheres)
     if not designed.any():
         sys.exit("designed_faces_near: no reference face turns that far from the axis")
     # Points on the designed faces, spaced well under --distance.

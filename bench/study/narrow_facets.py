@@ -24,6 +24,8 @@ from collections import defaultdict
 
 import numpy as np
 
+import within
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
@@ -38,7 +40,7 @@ def read(path):
     return np.asarray(m.vertices), np.asarray(m.triangles), np.asarray(m.triangle_normals)
 
 
-def facets(v, t, n, max_turn_deg):
+def facets(t, n, max_turn_deg):
     """Connected groups of faces whose normals lie within max_turn_deg of their seed's."""
     by_edge = defaultdict(list)
     for f, tri in enumerate(t):
@@ -100,27 +102,19 @@ def main():
                     help="list facets whose widest bin is at most this (reference units)")
     ap.add_argument("--min-faces", type=int, default=3)
     ap.add_argument("--angle", type=float, default=4.0, help="degrees a facet's normals turn")
-    ap.add_argument("--within", action="append", default=[], metavar="X,Y,Z,R",
-                    help="only facets with a face centroid within R of this point")
+    within.add_option(ap, "only facets with a face centroid within R of this point")
     ap.add_argument("--harm", type=float, default=0.3,
                     help="a move is harmful when it lands this many spacings farther")
     ap.add_argument("--build", default=str(ROOT / "build"))
     args = ap.parse_args()
     v, t, n = read(args.reference)
     centroids = v[t].mean(axis=1)
-    try:
-        spheres = [tuple(float(x) for x in w.split(",")) for w in args.within]
-    except ValueError:
-        spheres = [()]
-    if any(len(w) != 4 for w in spheres):
-        sys.exit("narrow_facets: --within takes X,Y,Z,R")
+    spheres = within.spheres(args, "narrow_facets")
     found = []
-    for members in facets(v, t, n, args.angle):
+    for members in facets(t, n, args.angle):
         if len(members) < args.min_faces:
             continue
-        if spheres and not any(
-                (np.linalg.norm(centroids[members] - np.array(s[:3]), axis=1) <= s[3]).any()
-                for s in spheres):
+        if spheres and not within.inside(centroids[members], spheres).any():
             continue
         facet = profile(v, t, n, members)
         if facet[5] and max(facet[5]) <= args.max_width:
@@ -136,7 +130,7 @@ def main():
                          capture_output=True, text=True, check=True).stdout
     moves = [json.loads(line) for line in out.splitlines() if line.startswith("{")]
     mv, mt, _ = read(args.mesh)
-    spacing = np.median(np.linalg.norm(mv[mt[:, [0, 1, 2]]] - mv[mt[:, [1, 2, 0]]], axis=2))
+    spacing = np.median(np.linalg.norm(mv[mt] - mv[mt[:, [1, 2, 0]]], axis=2))
     harmful = sorted((m for m in moves if m["after"] - m["before"] > args.harm),
                      key=lambda m: -m["after"])
     print(f"{len(harmful)} moves land more than {args.harm:g} spacings farther "
