@@ -77,6 +77,10 @@
 #                               Volume at 1%: its bottom outline's designed fillet, 2.4 sample
 #                               spacings across, is kept; an RMS factor against a floor, not
 #                               made worse (skipped without OpenVDB).
+#   quality.corner_on_line      pyramid by OpenVDB as Blender's voxel remesh with Preserve Volume
+#                               at 1%: samples on the edges into the apex merge into it, the
+#                               apex placed whole; a max factor against a floor, not made worse
+#                               (skipped without OpenVDB).
 # The full benchmark (docs/results.md) is scripts/bench-quality.sh, not a test.
 # All exit 77 (skipped) when MeshLab or python3 is not installed, fandisk_targets and
 # long_move also without ../shared. Run: ctest -L quality
@@ -86,5 +90,5 @@ edge_sharpener_meshlab_script_tests(quality
   long_move 600  saddle_corners 600  mostly_on_planes 600  bend_with_feature 600
   region_planes 600  rough_planes 600  raised_features 600  exact_sampling 600
   partly_sharp 600  corner_cells 600  coincident_corners 600  corner_patch 600
-  designed_fillet 600
+  designed_fillet 600  corner_on_line 600
   ENVIRONMENT "ES_BUILD_DIR=${CMAKE_BINARY_DIR}")

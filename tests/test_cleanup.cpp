@@ -538,3 +538,87 @@ TEST(NeedleCollapse, ACapCollapseKeepsTheCornerVertex) {
   EXPECT_EQ(m2.vert[kCapE].cP(), before2[kCapE]);
   EXPECT_TRUE(closedOrientedManifold(m2));
 }
+
+namespace {
+
+// The cap e a d of capBetweenInserted() with one of its shortest edge's ends
+// from the input: e is the original vertex when `middleFromInput`, else a.
+// `pRise` lifts p off the plane of e's fan.
+void capBesideInputVertex(es::Mesh &m, es::SplitPlan &plan, bool middleFromInput,
+                          double pRise = 0) {
+  const int e = middleFromInput ? 4 : 5, a = middleFromInput ? 5 : 4;
+  Triangles triangles{{e, a, kCapD}, {e, kCapD, kCapP}, {e, kCapP, kCapQ}, {e, kCapQ, a}};
+  addConeUnderBorder(triangles, kCapApex);
+  std::vector<Vec3> points{Vec3(1, -0.005, 0),
+                           Vec3(0.5, 1, pRise),
+                           Vec3(-0.5, 0.5, 0),
+                           Vec3(0.3, 0.3, -1),
+                           Vec3(),
+                           Vec3()};
+  points[e] = Vec3(0.2, 0, 0);
+  points[a] = Vec3(0, 0, 0);
+  es::hand_built::makeMesh(m, points, triangles);
+  plan = insertedFrom(5);
+  plan.inserted.resize(1);
+  plan.inserted[0].originalCount = 3;
+}
+
+}  // namespace
+
+// A cap on a line into a corner placed whole (a remesher that casts its
+// samples onto the surface puts them on its sharp edges), its shortest edge
+// between an input and an inserted vertex: its middle vertex goes into the
+// other end, which keeps its point, where every face around it keeps its
+// plane; where one would tilt, or the cap has no vertex of such a corner,
+// nothing collapses.
+TEST(NeedleCollapse, ACapsMiddleInputVertexGoesIntoACornerPlacedWhole) {
+  es::Mesh m;
+  es::SplitPlan plan;
+  capBesideInputVertex(m, plan, /*middleFromInput=*/true);
+  ASSERT_TRUE(closedOrientedManifold(m));
+  const auto before = positions(m);
+  const auto cornerAtA = [](std::size_t v) { return v == 5; };
+  const auto noCorner = [](std::size_t) { return false; };
+  int removed = 0;
+  const std::size_t cap = faceWith(m, 4, 5, kCapD);
+  EXPECT_FALSE(es::collapseNeedle(m, m.face[cap], plan, kDegenerateRad, removed,
+                                  /*capsBetweenInserted=*/true));
+  EXPECT_FALSE(es::collapseNeedle(m, m.face[cap], plan, kDegenerateRad, removed,
+                                  /*capsBetweenInserted=*/true, noCorner));
+  EXPECT_EQ(liveFaces(m), 8u);
+  ASSERT_TRUE(es::collapseNeedle(m, m.face[cap], plan, kDegenerateRad, removed,
+                                 /*capsBetweenInserted=*/true, cornerAtA));
+  EXPECT_TRUE(m.vert[4].IsD());
+  EXPECT_EQ(m.vert[5].cP(), before[5]);
+  EXPECT_EQ(liveFaces(m), 6u);
+  EXPECT_TRUE(closedOrientedManifold(m));
+
+  es::Mesh tilted;
+  capBesideInputVertex(tilted, plan, /*middleFromInput=*/true, /*pRise=*/0.3);
+  EXPECT_FALSE(es::collapseNeedle(tilted, tilted.face[faceWith(tilted, 4, 5, kCapD)], plan,
+                                  kDegenerateRad, removed, /*capsBetweenInserted=*/true,
+                                  cornerAtA));
+  EXPECT_EQ(liveFaces(tilted), 8u);
+}
+
+// The inserted vertex in the middle, the input vertex at the end, the corner
+// placed whole at the cap's far end d: the middle one goes, and the input
+// vertex keeps its point. A corner's own vertex never goes.
+TEST(NeedleCollapse, ACapsMiddleInsertedVertexGoesIntoTheInputVertexBesideIt) {
+  es::Mesh m;
+  es::SplitPlan plan;
+  capBesideInputVertex(m, plan, /*middleFromInput=*/false);
+  const auto before = positions(m);
+  int removed = 0;
+  const std::size_t cap = faceWith(m, 5, 4, kCapD);
+  EXPECT_FALSE(es::collapseNeedle(m, m.face[cap], plan, kDegenerateRad, removed,
+                                  /*capsBetweenInserted=*/true,
+                                  [](std::size_t v) { return v == 5; }));
+  ASSERT_TRUE(es::collapseNeedle(m, m.face[cap], plan, kDegenerateRad, removed,
+                                 /*capsBetweenInserted=*/true,
+                                 [](std::size_t v) { return v == kCapD; }));
+  EXPECT_TRUE(m.vert[5].IsD());
+  EXPECT_EQ(m.vert[4].cP(), before[4]);
+  EXPECT_EQ(liveFaces(m), 6u);
+  EXPECT_TRUE(closedOrientedManifold(m));
+}

@@ -145,8 +145,10 @@ class AutoMethod {
   /// intersection guard, once.
   GuardStats cleanUp(VertexMoves<MeshType> &moves, double longestInputEdge) {
     GuardStats guards;
-    guards.cleanup = removeDegenerateTriangles(m_, moves, opt_.degenerateAngleRad,
-                                               /*onlyWhereMoved=*/true);
+    const std::vector<char> placedWhole = guard_->placedWholeVertices();
+    guards.cleanup =
+        removeDegenerateTriangles(m_, moves, opt_.degenerateAngleRad, /*onlyWhereMoved=*/true,
+                                  [&](std::size_t v) { return placedWhole[v] != 0; });
     guards.planarFolds = unfoldPlanarPatches(
         m_, [&](std::size_t v) { return !moves.isAtRest(v); },
         VertexRules::kFoldPlaneSpacings * spacingUnit(zones_.support), opt_.degenerateAngleRad);

@@ -2,7 +2,8 @@
 // e.g. where more than three sharp edges meet and several inserted vertices
 // move to the same corner (paper, Figure 8; Botsch & Kobbelt, VMV 2001).
 // Only faces produced by the subdivision are touched; original vertices never
-// move and faces of smooth regions are never changed.
+// move and faces of smooth regions are never changed (an input vertex on a
+// restored line may be merged away where every face around it keeps its plane).
 #pragma once
 
 #include <vcg/complex/complex.h>
@@ -10,6 +11,7 @@
 #include <vcg/simplex/face/topology.h>
 
 #include <algorithm>
+#include <functional>
 #include <vector>
 
 #include "guards/vertex_moves.h"
@@ -121,12 +123,18 @@ bool isInputSliverAtRest(const MeshType &m, const typename MeshType::FaceType &f
 /// when both its ends are inserted vertices (two new vertices placed on one
 /// line, side by side, with a third vertex of it: the flat face between them
 /// goes, and the line keeps its points); a corner vertex then stays, an edge
-/// vertex goes. Refused when it would break manifoldness (link condition) or
-/// flip a surrounding face. \return true if collapsed; `removedFaces` then
+/// vertex goes; and of a cap with a vertex of a corner `placedWhole` (the
+/// guards give such a corner up whole, undoing what merged into it) whose
+/// shortest edge joins an inserted and an input vertex, its middle vertex
+/// (opposite its longest edge) into the other end, where every face around
+/// it keeps its plane (within `angleRad`). Refused
+/// when it would break manifoldness (link condition) or flip a surrounding
+/// face. \return true if collapsed; `removedFaces` then
 /// holds the number of faces deleted (2, or 1 on a border edge).
 template <class MeshType>
 bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan &plan,
-                    double angleRad, int &removedFaces, bool capsBetweenInserted = false) {
+                    double angleRad, int &removedFaces, bool capsBetweenInserted = false,
+                    const std::function<bool(std::size_t)> &placedWhole = {}) {
   using FaceType = typename MeshType::FaceType;
   using Pos = vcg::face::Pos<FaceType>;
   const int z = detail::shortestEdgeIndex(f);
@@ -137,13 +145,23 @@ bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan
   const std::size_t n0 = plan.originalVertexCount;
   const bool insA = ia >= n0, insB = ib >= n0;
   const bool needle = shortLen <= 2 * std::sin(angleRad) * longLen;
-  if (!needle && !(capsBetweenInserted && insA && insB)) return false;
   if (!insA && !insB) return false;
+  // A cap with a vertex of a corner placed whole, all three on one line
+  // into the corner (a remesher that casts its samples onto the surface
+  // puts them on its sharp edges), between an inserted and an input vertex:
+  // its middle vertex goes into the other end of its shortest edge where
+  // every face around it keeps its plane.
+  bool atCornerPlacedWhole = false;
+  for (int j = 0; j < 3 && placedWhole; ++j)
+    atCornerPlacedWhole = atCornerPlacedWhole || placedWhole(vcg::tri::Index(m, f.cV(j)));
+  const bool middleOnLine = capsBetweenInserted && !needle && insA != insB && atCornerPlacedWhole &&
+                            !placedWhole(vcg::tri::Index(m, f.cV((zl + 2) % 3)));
+  if (!needle && !(capsBetweenInserted && insA && insB) && !middleOnLine) return false;
   // FFEdgeCollapse removes V0 of the edge: pick the side where that is the
   // inserted vertex (the higher index when both are inserted; of a cap's
-  // two, the one with fewer sources: a corner stays).
-  bool removeA = insA && (!insB || ia > ib);
-  if (!needle) {
+  // two, the one with fewer sources: a corner stays), or the cap's middle.
+  bool removeA = middleOnLine ? f.cV(z) == f.cV((zl + 2) % 3) : insA && (!insB || ia > ib);
+  if (!needle && !middleOnLine) {
     const int sourcesA = plan.inserted[ia - n0].originalCount;
     const int sourcesB = plan.inserted[ib - n0].originalCount;
     if (sourcesA != sourcesB) removeA = sourcesA < sourcesB;
@@ -177,6 +195,10 @@ bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan
     const Vec3 before = triangleNormal(q[0], q[1], q[2]);
     const Vec3 after = triangleNormal(r[0], r[1], r[2]);
     if (!(before * after > 0)) return false;
+    const Vec3 shift = positionOf(kept) - positionOf(gone);
+    if (middleOnLine &&
+        std::abs(before * shift) > std::sin(angleRad) * before.Norm() * shift.Norm())
+      return false;
   }
   removedFaces = cf->FFp(cz) == cf ? 1 : 2;  // a border edge has one face
   vcg::face::FFEdgeCollapse(m, *cf, cz);
@@ -227,8 +249,9 @@ std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
 
 /// Stage 6: removes faces with an angle below `angleRad` among the faces made
 /// by subdivide(): needles by collapse, caps by flip or, where no flip helps
-/// and both ends of the cap's shortest edge are inserted vertices, by
-/// collapse, and otherwise by sending the face's moved vertices back to rest,
+/// and both ends of the cap's shortest edge are inserted vertices or one of
+/// them is and the cap has a vertex of a corner `placedWhole`, by collapse
+/// (collapseNeedle), and otherwise by sending the face's moved vertices back to rest,
 /// unless the face is an input sliver's child that stays a needle at rest too
 /// (detail::isInputSliverAtRest). What is left is inherited from the input:
 /// children of input slivers. Deleted elements are left flagged (compact
@@ -238,7 +261,8 @@ std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
 /// \pre placeInsertedVertices() ran; FF topology up to date.
 template <class MeshType>
 CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves, double angleRad,
-                                       bool onlyWhereMoved = false) {
+                                       bool onlyWhereMoved = false,
+                                       const std::function<bool(std::size_t)> &placedWhole = {}) {
   const SplitPlan &plan = moves.plan();
   MeshLabels<MeshType> &labels = moves.labels();
   CleanupStats s;
@@ -274,7 +298,8 @@ CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves
         s.removedFaces += std::size_t(removed);
       } else if (flipCap(f, labels)) {
         ++s.flips;
-      } else if (collapseNeedle(m, f, plan, angleRad, removed, /*capsBetweenInserted=*/true)) {
+      } else if (collapseNeedle(m, f, plan, angleRad, removed, /*capsBetweenInserted=*/true,
+                                placedWhole)) {
         ++s.collapses;
         s.removedFaces += std::size_t(removed);
       } else if (detail::isInputSliverAtRest(m, f, moves, angleRad)) {

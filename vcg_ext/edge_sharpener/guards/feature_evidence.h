@@ -1006,6 +1006,16 @@ class EvidenceGuard {
   /// (keptMoves), by vertex index; empty before revertWeakFeatures().
   const std::vector<char> &retreatFirst() const { return retreatFirst_; }
 
+  /// The vertices of the corners placed whole (placeCornerPatches) and not
+  /// given up, by vertex index: the guards give such a corner up whole, with
+  /// what the cleanup merged into it (removeDegenerateTriangles).
+  std::vector<char> placedWholeVertices() const {
+    std::vector<char> whole(m_.vert.size(), 0);
+    for (const CornerPatch &patch : patches_)
+      for (const std::uint32_t k : patch.members) whole[moves_.firstInserted() + k] = 1;
+    return whole;
+  }
+
   /// After the cleanup and the intersection guard: when they refused so
   /// many of the moves left that the mesh as a whole shows too little
   /// evidence (refusedFraction), the mesh returns to `beforeGuards` with
