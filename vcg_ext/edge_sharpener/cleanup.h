@@ -127,10 +127,10 @@ bool isInputSliverAtRest(const MeshType &m, const typename MeshType::FaceType &f
 /// guards give such a corner up whole, undoing what merged into it) whose
 /// shortest edge joins an inserted and an input vertex, its middle vertex
 /// (opposite its longest edge) into the other end, where every face around
-/// it keeps its plane (within `angleRad`). Refused
-/// when it would break manifoldness (link condition) or flip a surrounding
-/// face. \return true if collapsed; `removedFaces` then
-/// holds the number of faces deleted (2, or 1 on a border edge).
+/// it keeps its plane (within `angleRad`). Refused when it would break
+/// manifoldness (link condition) or flip a surrounding face. \return true
+/// if collapsed; `removedFaces` then holds the number of faces deleted (2,
+/// or 1 on a border edge).
 template <class MeshType>
 bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan &plan,
                     double angleRad, int &removedFaces, bool capsBetweenInserted = false,
@@ -251,13 +251,14 @@ std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
 /// by subdivide(): needles by collapse, caps by flip or, where no flip helps
 /// and both ends of the cap's shortest edge are inserted vertices or one of
 /// them is and the cap has a vertex of a corner `placedWhole`, by collapse
-/// (collapseNeedle), and otherwise by sending the face's moved vertices back to rest,
-/// unless the face is an input sliver's child that stays a needle at rest too
-/// (detail::isInputSliverAtRest). What is left is inherited from the input:
-/// children of input slivers. Deleted elements are left flagged (compact
-/// afterwards). With `onlyWhereMoved` (the auto method),
-/// a face none of whose vertices moved is left as it is: it lies on its
-/// input face, and a collapse would move the input's surface.
+/// (collapseNeedle), and otherwise by sending the face's moved vertices back
+/// to rest, unless the face is an input sliver's child that stays a needle
+/// at rest too (detail::isInputSliverAtRest). What is left is inherited from
+/// the input: children of input slivers. Deleted elements are left flagged
+/// (compact afterwards). With `onlyWhereMoved` (the auto method), a face none
+/// of whose vertices moved is left as it is: it lies on its input face, and
+/// a collapse would move the input's surface. `placedWhole` (by vertex index;
+/// the auto method's corners placed whole) may be empty.
 /// \pre placeInsertedVertices() ran; FF topology up to date.
 template <class MeshType>
 CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves, double angleRad,
