@@ -577,17 +577,17 @@ TEST(NeedleCollapse, ACapsMiddleInputVertexGoesIntoACornerPlacedWhole) {
   capBesideInputVertex(m, plan, /*middleFromInput=*/true);
   ASSERT_TRUE(closedOrientedManifold(m));
   const auto before = positions(m);
-  const auto cornerAtA = [](std::size_t v) { return v == 5; };
-  const auto noCorner = [](std::size_t) { return false; };
+  std::vector<char> cornerAtA(m.vert.size(), 0), noCorner(m.vert.size(), 0);
+  cornerAtA[5] = 1;
   int removed = 0;
   const std::size_t cap = faceWith(m, 4, 5, kCapD);
   EXPECT_FALSE(es::collapseNeedle(m, m.face[cap], plan, kDegenerateRad, removed,
                                   /*capsBetweenInserted=*/true));
   EXPECT_FALSE(es::collapseNeedle(m, m.face[cap], plan, kDegenerateRad, removed,
-                                  /*capsBetweenInserted=*/true, noCorner));
+                                  /*capsBetweenInserted=*/true, &noCorner));
   EXPECT_EQ(liveFaces(m), 8u);
   ASSERT_TRUE(es::collapseNeedle(m, m.face[cap], plan, kDegenerateRad, removed,
-                                 /*capsBetweenInserted=*/true, cornerAtA));
+                                 /*capsBetweenInserted=*/true, &cornerAtA));
   EXPECT_TRUE(m.vert[4].IsD());
   EXPECT_EQ(m.vert[5].cP(), before[5]);
   EXPECT_EQ(liveFaces(m), 6u);
@@ -597,7 +597,7 @@ TEST(NeedleCollapse, ACapsMiddleInputVertexGoesIntoACornerPlacedWhole) {
   capBesideInputVertex(tilted, plan, /*middleFromInput=*/true, /*pRise=*/0.3);
   EXPECT_FALSE(es::collapseNeedle(tilted, tilted.face[faceWith(tilted, 4, 5, kCapD)], plan,
                                   kDegenerateRad, removed, /*capsBetweenInserted=*/true,
-                                  cornerAtA));
+                                  &cornerAtA));
   EXPECT_EQ(liveFaces(tilted), 8u);
 }
 
@@ -611,12 +611,13 @@ TEST(NeedleCollapse, ACapsMiddleInsertedVertexGoesIntoTheInputVertexBesideIt) {
   const auto before = positions(m);
   int removed = 0;
   const std::size_t cap = faceWith(m, 5, 4, kCapD);
+  std::vector<char> cornerAtMiddle(m.vert.size(), 0), cornerAtD(m.vert.size(), 0);
+  cornerAtMiddle[5] = 1;
+  cornerAtD[kCapD] = 1;
   EXPECT_FALSE(es::collapseNeedle(m, m.face[cap], plan, kDegenerateRad, removed,
-                                  /*capsBetweenInserted=*/true,
-                                  [](std::size_t v) { return v == 5; }));
+                                  /*capsBetweenInserted=*/true, &cornerAtMiddle));
   ASSERT_TRUE(es::collapseNeedle(m, m.face[cap], plan, kDegenerateRad, removed,
-                                 /*capsBetweenInserted=*/true,
-                                 [](std::size_t v) { return v == kCapD; }));
+                                 /*capsBetweenInserted=*/true, &cornerAtD));
   EXPECT_TRUE(m.vert[5].IsD());
   EXPECT_EQ(m.vert[4].cP(), before[4]);
   EXPECT_EQ(liveFaces(m), 6u);

@@ -146,9 +146,8 @@ class AutoMethod {
   GuardStats cleanUp(VertexMoves<MeshType> &moves, double longestInputEdge) {
     GuardStats guards;
     const std::vector<char> placedWhole = guard_->placedWholeVertices();
-    guards.cleanup =
-        removeDegenerateTriangles(m_, moves, opt_.degenerateAngleRad, /*onlyWhereMoved=*/true,
-                                  [&](std::size_t v) { return placedWhole[v] != 0; });
+    guards.cleanup = removeDegenerateTriangles(m_, moves, opt_.degenerateAngleRad,
+                                               /*onlyWhereMoved=*/true, &placedWhole);
     guards.planarFolds = unfoldPlanarPatches(
         m_, [&](std::size_t v) { return !moves.isAtRest(v); },
         VertexRules::kFoldPlaneSpacings * spacingUnit(zones_.support), opt_.degenerateAngleRad);

@@ -11,7 +11,6 @@
 #include <vcg/simplex/face/topology.h>
 
 #include <algorithm>
-#include <functional>
 #include <vector>
 
 #include "guards/vertex_moves.h"
@@ -134,7 +133,7 @@ bool isInputSliverAtRest(const MeshType &m, const typename MeshType::FaceType &f
 template <class MeshType>
 bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan &plan,
                     double angleRad, int &removedFaces, bool capsBetweenInserted = false,
-                    const std::function<bool(std::size_t)> &placedWhole = {}) {
+                    const std::vector<char> *placedWhole = nullptr) {
   using FaceType = typename MeshType::FaceType;
   using Pos = vcg::face::Pos<FaceType>;
   const int z = detail::shortestEdgeIndex(f);
@@ -151,11 +150,13 @@ bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan
   // puts them on its sharp edges), between an inserted and an input vertex:
   // its middle vertex goes into the other end of its shortest edge where
   // every face around it keeps its plane.
-  bool atCornerPlacedWhole = false;
-  for (int j = 0; j < 3 && placedWhole; ++j)
-    atCornerPlacedWhole = atCornerPlacedWhole || placedWhole(vcg::tri::Index(m, f.cV(j)));
-  const bool middleOnLine = capsBetweenInserted && !needle && insA != insB && atCornerPlacedWhole &&
-                            !placedWhole(vcg::tri::Index(m, f.cV((zl + 2) % 3)));
+  const auto isPlacedWhole = [&](int j) {
+    const std::size_t v = vcg::tri::Index(m, f.cV(j));
+    return placedWhole && v < placedWhole->size() && (*placedWhole)[v];
+  };
+  const bool middleOnLine = capsBetweenInserted && !needle && insA != insB &&
+                            (isPlacedWhole(0) || isPlacedWhole(1) || isPlacedWhole(2)) &&
+                            !isPlacedWhole((zl + 2) % 3);
   if (!needle && !(capsBetweenInserted && insA && insB) && !middleOnLine) return false;
   // FFEdgeCollapse removes V0 of the edge: pick the side where that is the
   // inserted vertex (the higher index when both are inserted; of a cap's
@@ -177,6 +178,7 @@ bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan
 
   auto *gone = cf->V0(cz);
   auto *kept = cf->V1(cz);
+  const Vec3 shift = positionOf(kept) - positionOf(gone);
   std::vector<Pos> star;
   vcg::face::VFOrderedStarFF(Pos(cf, cz, gone), star);
   for (const Pos &p : star) {
@@ -195,7 +197,6 @@ bool collapseNeedle(MeshType &m, typename MeshType::FaceType &f, const SplitPlan
     const Vec3 before = triangleNormal(q[0], q[1], q[2]);
     const Vec3 after = triangleNormal(r[0], r[1], r[2]);
     if (!(before * after > 0)) return false;
-    const Vec3 shift = positionOf(kept) - positionOf(gone);
     if (middleOnLine &&
         std::abs(before * shift) > std::sin(angleRad) * before.Norm() * shift.Norm())
       return false;
@@ -257,13 +258,13 @@ std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
 /// the input: children of input slivers. Deleted elements are left flagged
 /// (compact afterwards). With `onlyWhereMoved` (the auto method), a face none
 /// of whose vertices moved is left as it is: it lies on its input face, and
-/// a collapse would move the input's surface. `placedWhole` (by vertex index;
-/// the auto method's corners placed whole) may be empty.
+/// a collapse would move the input's surface. `placedWhole` (by vertex index,
+/// optional): the auto method's corners placed whole.
 /// \pre placeInsertedVertices() ran; FF topology up to date.
 template <class MeshType>
 CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves, double angleRad,
                                        bool onlyWhereMoved = false,
-                                       const std::function<bool(std::size_t)> &placedWhole = {}) {
+                                       const std::vector<char> *placedWhole = nullptr) {
   const SplitPlan &plan = moves.plan();
   MeshLabels<MeshType> &labels = moves.labels();
   CleanupStats s;
