@@ -134,6 +134,10 @@ def main():
                              "restores on the input as it comes (its --json report)")
     parser.add_argument("--rings", type=int, default=0,
                         help="with --features-only: also the faces this many vertex rings around")
+    parser.add_argument("--near-sent-back", type=float, default=0, metavar="SPACINGS",
+                        help="collapse only edges within this many median edge lengths of a "
+                             "vertex the default's guards sent back to rest (a notch: "
+                             "notch_census.py)")
     parser.add_argument("--jobs", type=int, default=2)
     args = parser.parse_args()
     build = pathlib.Path(args.build)
@@ -165,7 +169,8 @@ def main():
         cells = [half, os.path.basename(path)[:-4], "input " + measure(path, ref)]
         with tempfile.TemporaryDirectory() as tmp:
             out = os.path.join(tmp, "out.ply")
-            run = subprocess.run([sharpener, "--json", path, out], capture_output=True, text=True)
+            run = subprocess.run([sharpener, "--json", "--colorize", "--colors", "paper", path,
+                                  out], capture_output=True, text=True)
             if run.returncode:
                 return "  ".join(cells + ["default failed"])
             cells.append("default " + measure(out, ref))
@@ -179,6 +184,16 @@ def main():
                         allowed[faces[feature["faces"]].ravel()] = True
                 for _ in range(args.rings):
                     allowed[faces[allowed[faces].any(axis=1)].ravel()] = True
+            if args.near_sent_back > 0:
+                painted = o3d.io.read_triangle_mesh(out)
+                colours = np.round(np.asarray(painted.vertex_colors) * 255).astype(int)
+                sent = np.asarray(painted.vertices)[np.all(colours == (255, 150, 200), axis=1)
+                                                    | np.all(colours == (255, 255, 255), axis=1)]
+                reach = args.near_sent_back * median_edge_length(vertices, faces)
+                near = np.zeros(len(vertices), bool)
+                for q in sent:
+                    near |= np.linalg.norm(vertices - q, axis=1) <= reach
+                allowed = near if allowed is None else allowed & near
             for eps in bounds:
                 v2, f2, n = collapse_short_edges(vertices, faces, eps, allowed)
                 collapsed = os.path.join(tmp, "collapsed.ply")
