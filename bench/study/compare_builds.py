@@ -15,16 +15,14 @@ Run: /usr/bin/python3 bench/study/compare_builds.py BEFORE/apps/edge-sharpener \
 """
 import argparse
 import filecmp
-import glob
 import json
 import os
 import pathlib
-import re
 import subprocess
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
-from evidence_study import references
+from evidence_study import cached_inputs, model_of, references
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
@@ -44,14 +42,7 @@ def main():
     after = pathlib.Path(args.after) if args.after else build / "apps" / "edge-sharpener"
     distance = build / "apps" / "mesh-distance"
     tuning = set(json.load(open(ROOT / "bench" / "quality" / "split.json"))["tuning"])
-    inputs = sorted(p for p in glob.glob(str(cache / "inputs" / "*.ply")) if "unsharp" not in p)
-    inputs += sorted(glob.glob(str(cache / "generated" / "*_mc1.ply")))
-    inputs = [p for p in inputs if re.search(args.match, os.path.basename(p))]
-
-    def model_of(path):
-        name = os.path.basename(path)
-        return name.split("__")[0] if "__" in name else name[:-len("_mc1.ply")]
-
+    inputs = cached_inputs(str(cache), args.match)
     refs = references(str(cache), args.shared)
 
     def measure(mesh, ref, samples=100000):

@@ -14,6 +14,7 @@ import concurrent.futures
 import glob
 import json
 import os
+import re
 import subprocess
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -30,6 +31,21 @@ def references(cache, shared):
             if ext.lower() in (".off", ".obj", ".stl", ".ply"):
                 refs[stem] = p
     return refs
+
+
+def cached_inputs(cache, match=""):
+    """The benchmark's cached inputs (BUILD/quality-cache/inputs, without UnSharp Mask's outputs,
+    then its own marching cubes, generated/*_mc1.ply) whose file name `match` finds."""
+    inputs = sorted(p for p in glob.glob(os.path.join(cache, "inputs", "*.ply"))
+                    if "unsharp" not in p)
+    inputs += sorted(glob.glob(os.path.join(cache, "generated", "*_mc1.ply")))
+    return [p for p in inputs if re.search(match, os.path.basename(p))]
+
+
+def model_of(path):
+    """The reference a cached input was made from (references()' key)."""
+    name = os.path.basename(path)
+    return name.split("__")[0] if "__" in name else name[:-len("_mc1.ply")]
 
 
 def main():

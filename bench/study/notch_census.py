@@ -16,7 +16,6 @@ Run: /usr/bin/python3 bench/study/notch_census.py [--match REGEX] [--build build
 """
 import argparse
 import collections
-import glob
 import json
 import os
 import pathlib
@@ -28,11 +27,39 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 import open3d as o3d
 
-from evidence_study import references
+from evidence_study import cached_inputs, model_of, references
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 SENT_BACK = {(255, 150, 200): "intersection guard", (255, 255, 255): "cleanup"}
 FAMILY = re.compile(r"__(umr|vdbproj|vdb)_")
+
+
+def median_edge_length(vertices, faces):
+    """The mesh's median edge length (each edge once per face): its sample spacing."""
+    edges = np.vstack([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]])
+    return float(np.median(np.linalg.norm(vertices[edges[:, 0]] - vertices[edges[:, 1]], axis=1)))
+
+
+def sent_back_points(painted, guards=tuple(SENT_BACK.values())):
+    """The vertices of a `--colorize --colors paper` output that `guards` sent back to rest."""
+    colours = np.round(np.asarray(painted.vertex_colors) * 255).astype(int)
+    sent = np.zeros(len(colours), bool)
+    for colour, guard in SENT_BACK.items():
+        if guard in guards:
+            sent |= np.all(colours == colour, axis=1)
+    return np.asarray(painted.vertices)[sent]
+
+
+def surface_samples(mesh, count, seed=1):
+    """`count` points uniform over the mesh's area (a fixed seed: reruns read the same points)."""
+    v, f = np.asarray(mesh.vertices), np.asarray(mesh.triangles)
+    a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
+    area = np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    rng = np.random.default_rng(seed)
+    pick = rng.choice(len(f), size=count, p=area / area.sum())
+    r1, r2 = np.sqrt(rng.random(count)), rng.random(count)
+    return ((1 - r1)[:, None] * a[pick] + (r1 * (1 - r2))[:, None] * b[pick]
+            + (r1 * r2)[:, None] * c[pick])
 
 
 def without_zero_area_faces(mesh):
@@ -53,8 +80,7 @@ def farthest_point(out_path, ref_path):
     diagonal = float(np.linalg.norm(ref.get_max_bound() - ref.get_min_bound()))
     best = (-1.0, None)
     for source, target, on_output in ((out, ref, True), (ref, out, False)):
-        points = np.vstack([np.asarray(source.sample_points_uniformly(100000).points),
-                            np.asarray(source.vertices)])
+        points = np.vstack([surface_samples(source, 100000), np.asarray(source.vertices)])
         scene = o3d.t.geometry.RaycastingScene()
         scene.add_triangles(o3d.t.geometry.TriangleMesh.from_legacy(target))
         closest = scene.compute_closest_points(
@@ -79,40 +105,34 @@ def main():
     build = pathlib.Path(args.build)
     cache = build / "quality-cache"
     tuning = set(json.load(open(ROOT / "bench" / "quality" / "split.json"))["tuning"])
-    inputs = sorted(p for p in glob.glob(str(cache / "inputs" / "*.ply"))
-                    if "unsharp" not in p and FAMILY.search(p))
-    inputs += sorted(glob.glob(str(cache / "generated" / "*_mc1.ply")))
-    inputs = [p for p in inputs if re.search(args.match, os.path.basename(p))]
+    inputs = [p for p in cached_inputs(str(cache), args.match)
+              if FAMILY.search(p) or p.endswith("_mc1.ply")]
     refs = references(str(cache), args.shared)
 
     def one(path):
-        name = os.path.basename(path)[:-len(".ply")]
-        model = name.split("__")[0] if "__" in name else name[:-len("_mc1")]
+        name, model = os.path.basename(path)[:-len(".ply")], model_of(path)
         if model not in refs:
             return None
-        family = FAMILY.search(path).group(1) if FAMILY.search(path) else "mc"
+        grid = FAMILY.search(path)
+        family = grid.group(1) if grid else "mc"
         half = "tuning" if model in tuning else "validation"
         with tempfile.TemporaryDirectory() as tmp:
             out = os.path.join(tmp, "out.ply")
             subprocess.run([build / "apps" / "edge-sharpener", "-q", "--colorize", "--colors",
                             "paper", path, out], check=True)
             max_percent, point = farthest_point(out, refs[model])
-            mesh = o3d.io.read_triangle_mesh(out)
-            colours = np.round(np.asarray(mesh.vertex_colors) * 255).astype(int)
-            vertices = np.asarray(mesh.vertices)
+            painted = o3d.io.read_triangle_mesh(out)
         source = o3d.io.read_triangle_mesh(path)
-        v, f = np.asarray(source.vertices), np.asarray(source.triangles)
-        edges = np.vstack([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]])
-        spacing = float(np.median(np.linalg.norm(v[edges[:, 0]] - v[edges[:, 1]], axis=1)))
-        nearest = None
-        for colour, guard in SENT_BACK.items():
-            sent = np.all(colours == colour, axis=1)
-            if sent.any():
-                d = float(np.min(np.linalg.norm(vertices[sent] - point, axis=1))) / spacing
+        spacing = median_edge_length(np.asarray(source.vertices), np.asarray(source.triangles))
+        nearest, sent_count = None, 0
+        for guard in SENT_BACK.values():
+            sent = sent_back_points(painted, (guard,))
+            sent_count += len(sent)
+            if len(sent):
+                d = float(np.min(np.linalg.norm(sent - point, axis=1))) / spacing
                 if nearest is None or d < nearest[0]:
                     nearest = (d, guard)
-        return half, family, name, max_percent, nearest, int(
-            sum(np.all(colours == c, axis=1).sum() for c in SENT_BACK))
+        return half, family, name, max_percent, nearest, sent_count
 
     counts = collections.defaultdict(collections.Counter)
     with ThreadPoolExecutor(args.jobs) as pool:

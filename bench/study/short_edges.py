@@ -17,11 +17,9 @@ Run: /usr/bin/python3 bench/study/short_edges.py [--eps 0.1,0.2] [--match REGEX]
 (the cache is made by scripts/bench-quality.sh). Needs Debian's python3-numpy and python3-open3d.
 """
 import argparse
-import glob
 import json
 import os
 import pathlib
-import re
 import subprocess
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
@@ -29,14 +27,10 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 import open3d as o3d
 
-from evidence_study import references
+from evidence_study import cached_inputs, model_of, references
+from notch_census import median_edge_length, sent_back_points
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-
-
-def median_edge_length(vertices, faces):
-    edges = np.vstack([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]])
-    return float(np.median(np.linalg.norm(vertices[edges[:, 0]] - vertices[edges[:, 1]], axis=1)))
 
 
 def collapse_short_edges(vertices, faces, eps, allowed=None):
@@ -144,15 +138,9 @@ def main():
     cache = build / "quality-cache"
     sharpener, distance = build / "apps" / "edge-sharpener", build / "apps" / "mesh-distance"
     tuning = set(json.load(open(ROOT / "bench" / "quality" / "split.json"))["tuning"])
-    inputs = sorted(p for p in glob.glob(str(cache / "inputs" / "*.ply")) if "unsharp" not in p)
-    inputs += sorted(glob.glob(str(cache / "generated" / "*_mc1.ply")))
-    inputs = [p for p in inputs if re.search(args.match, os.path.basename(p))]
+    inputs = cached_inputs(str(cache), args.match)
     refs = references(str(cache), args.shared)
     bounds = args.eps
-
-    def model_of(path):
-        name = os.path.basename(path)
-        return name.split("__")[0] if "__" in name else name[:-len("_mc1.ply")]
 
     def measure(mesh, ref):
         out = subprocess.run([distance, "--json", "--sampling", "meshlab", "--samples", "100000",
@@ -185,10 +173,7 @@ def main():
                 for _ in range(args.rings):
                     allowed[faces[allowed[faces].any(axis=1)].ravel()] = True
             if args.near_sent_back > 0:
-                painted = o3d.io.read_triangle_mesh(out)
-                colours = np.round(np.asarray(painted.vertex_colors) * 255).astype(int)
-                sent = np.asarray(painted.vertices)[np.all(colours == (255, 150, 200), axis=1)
-                                                    | np.all(colours == (255, 255, 255), axis=1)]
+                sent = sent_back_points(o3d.io.read_triangle_mesh(out))
                 reach = args.near_sent_back * median_edge_length(vertices, faces)
                 near = np.zeros(len(vertices), bool)
                 for q in sent:
