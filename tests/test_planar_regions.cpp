@@ -187,6 +187,53 @@ TEST(OnRegionPlanes, NotWhereARegionIsNoPlane) {
   EXPECT_GT((t.placed() - kOnOwnPlanes).Norm(), 1e-3);
 }
 
+// A vertex whose flank bends away (a curved face beside a plane: a
+// cylinder's rim) takes its planar flank's own plane; the curved flank keeps
+// its fit (bent by its curvature where the fits measured one).
+TEST(OnRegionPlanes, ABentVertexBesideACurvedRegionTakesThePlanarFlanksOwnPlane) {
+  TwoSources t(0.05, 0.02);
+  t.support.regionPlanes[1] = es::Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)};
+  const es::Plane fits[2] = {t.support.plane(0), t.support.plane(1)};
+  const es::PaperSettings paper = es::PlacementPolicy::autoMethod(t.opt).paper;
+  Vec3 target;
+  es::paperPlacement(t.src, fits, paper, target);
+  es::detail::onRegionPlanes(t.src, t.support, paper, target, -1, /*bent=*/true);
+  EXPECT_NEAR(target.Z(), 0.0, 1e-9);
+  EXPECT_NEAR(fits[1].normal * (target - fits[1].point), 0.0, 1e-9);
+  EXPECT_GT((target - kOnOwnPlanes).Norm(), 1e-3);
+}
+
+// A region's plane passing a sample spacing from the samples fitted next to
+// the feature (a large, slightly curved face taken for a plane) does not
+// model that flank there: it keeps its fit, and the other flank its own plane.
+TEST(OnRegionPlanes, NotWhereTheRegionsPlanePassesFarFromTheFlanksSamples) {
+  TwoSources t(0.05, 0.03);
+  t.support.regionPlanes[0] = es::Plane{Vec3(0, 0, -0.02), Vec3(0, 0, 1)};  // 0.67 spacings off
+  t.support.regionPlanes[1] = es::Plane{Vec3(-0.01, 0, 0), Vec3(1, 0, 0)};  // 0.33 spacings off
+  const es::Plane fits[2] = {t.support.plane(0), t.support.plane(1)};
+  const es::PaperSettings paper = es::PlacementPolicy::autoMethod(t.opt).paper;
+  for (const double bound : {-1.0, t.opt.rules.feature.maxFeatureOffPlaneSpacings}) {
+    SCOPED_TRACE(bound);
+    Vec3 target;
+    es::paperPlacement(t.src, fits, paper, target);
+    es::detail::onRegionPlanes(t.src, t.support, paper, target, -1, false, bound);
+    EXPECT_NEAR(target.X(), -0.01, 1e-9);
+    if (bound < 0)
+      EXPECT_NEAR(target.Z(), -0.02, 1e-9);
+    else
+      EXPECT_NEAR(fits[0].normal * (target - fits[0].point), 0.0, 1e-9);
+  }
+}
+
+TEST(OnRegionPlanes, NotWhereNoRegionIsAPlane) {
+  TwoSources t(0.05, 0.02);
+  t.support.regionPlanes[0] = t.support.regionPlanes[1] = es::Plane{Vec3(0, 0, 0), Vec3(0, 0, 0)};
+  const es::Plane fits[2] = {t.support.plane(0), t.support.plane(1)};
+  Vec3 between;
+  es::paperPlacement(t.src, fits, es::PlacementPolicy::autoMethod(t.opt).paper, between);
+  EXPECT_LT((t.placed() - between).Norm(), 1e-12);
+}
+
 // The fits meet 0.0034 from the own planes' line: under a tenth of a
 // sample spacing of 0.1, they are as good.
 TEST(OnRegionPlanes, NotForAShiftUnderATenthOfASpacing) {
@@ -276,7 +323,8 @@ TEST(OwnPlaneTurns, TheMedianTurnOfAnEdgesVertices) {
   const es::OwnPlaneTurns turns(plan, support);
   // Edge (0, 1): turns 0, 4 and 25 degrees; the fit beside region 1 is exact.
   EXPECT_NEAR(turns.typicalRad(source(3, 1), support) * 180 / M_PI, 4, 1e-9);
-  EXPECT_LT(turns.typicalRad(source(0, 4), support), 0);                // region 2 is no plane
+  // Edge (0, 2): region 2 is no plane; the turn is its planar flank's.
+  EXPECT_NEAR(turns.typicalRad(source(0, 4), support), 0, 1e-12);
   EXPECT_LT(turns.typicalRad(source(0, 1, 2, 3), support), 0);          // a corner
   EXPECT_LT(es::OwnPlaneTurns().typicalRad(source(0, 1), support), 0);  // none measured
 }

@@ -335,15 +335,14 @@ inline Placement paperPlacement(const InsertedVertexSource &src, const Plane *pl
 namespace detail {
 
 /// The largest angle between the fitted planes of `src`'s sources and their
-/// regions' own planes (SupportPlanes::regionPlanes); -1 where a source's
-/// region is no plane.
+/// regions' own planes (SupportPlanes::regionPlanes), over the sources whose
+/// region is a plane; -1 where none is.
 inline double ownPlaneTurnRad(const InsertedVertexSource &src, const SupportPlanes &support) {
-  double turn = 0;
+  double turn = -1;
   for (int i = 0; i < src.originalCount; ++i) {
     const std::size_t s = src.original[i];
-    const Plane *own = regionPlaneOf(support.regionPlanes, support.region[s]);
-    if (!own) return -1;
-    turn = std::max(turn, angleBetween(own->normal, support.plane(s).normal));
+    if (const Plane *own = regionPlaneOf(support.regionPlanes, support.region[s]))
+      turn = std::max(turn, angleBetween(own->normal, support.plane(s).normal));
   }
   return turn;
 }
@@ -405,17 +404,37 @@ namespace detail {
 /// (`typicalTurnRad`, OwnPlaneTurns; negative: not known): a reconstruction
 /// rounds the whole edge alike, while a fit that turns alone sees where the
 /// flank runs on into another surface (a fillet at the edge's end), past
-/// which the own planes' line runs on straight.
+/// which the own planes' line runs on straight. A vertex marked `bent` (a
+/// flank bends away before its target: detail::onCurvedFlanks) whose other
+/// flank's region is no plane takes the own plane of each flank whose region
+/// is one, and the curved flanks' point from there: a plane meeting a curved
+/// face (a cylinder's cap) is the better estimate of that flank. A region's
+/// own plane stands for a flank only where it passes within
+/// `maxOffPlaneSpacings` (negative: any distance) of the samples fitted next
+/// to the feature; farther, the region is a slightly curved face taken for a
+/// plane, and that flank keeps its fit.
 inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes &support,
-                           const PaperSettings &paper, Vec3 &target, double typicalTurnRad = -1) {
+                           const PaperSettings &paper, Vec3 &target, double typicalTurnRad = -1,
+                           bool bent = false, double maxOffPlaneSpacings = -1) {
   if (support.regionPlanes.empty()) return;
   const double turn = ownPlaneTurnRad(src, support);
   if (turn < 0 || turn > ExtendedSettings::kOwnPlaneMaxTurnRad) return;
   if (typicalTurnRad >= 0 && turn > typicalTurnRad + ExtendedSettings::kOwnPlaneMaxExtraTurnRad)
     return;
   const auto ownPlane = [&](int region) { return regionPlaneOf(support.regionPlanes, region); };
+  // A flank keeps its fitted plane where its region is no plane (only beside
+  // a bent flank) or where the region's plane passes far from its samples.
   Plane own[3];
-  for (int i = 0; i < src.originalCount; ++i) own[i] = *ownPlane(support.region[src.original[i]]);
+  for (int i = 0; i < src.originalCount; ++i) {
+    const Plane fit = support.plane(src.original[i]);
+    const Plane *regionPlane = ownPlane(support.region[src.original[i]]);
+    if (!regionPlane && !bent) return;
+    const bool modelsFlank =
+        regionPlane && !(maxOffPlaneSpacings >= 0 &&
+                         std::abs(regionPlane->normal * (fit.point - regionPlane->point)) >
+                             maxOffPlaneSpacings * support.sampleSpacing);
+    own[i] = modelsFlank ? *regionPlane : fit;
+  }
   // An edge vertex's two sources list up to three nearby regions each.
   constexpr int kMaxEnds = 6;
   const Plane *ends[kMaxEnds];
@@ -429,6 +448,7 @@ inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes 
   if (blocked) return;
   Vec3 onOwn;
   if (paperPlacement(src, own, paper, onOwn) != Placement::Moved) return;
+  if (bent) onCurvedFlanks(src, own, support, onOwn);
   for (int k = 0; k < endCount; ++k) {
     const auto kept = keepBeforeEndPlane(own[0], own[1], *ends[k], onOwn, paper.parallelAngleRad);
     if (!kept) return;
@@ -560,7 +580,8 @@ inline Placement proposePlacement(const InsertedVertexSource &src, const Support
   if (outcome == Placement::Moved) {
     if (bent) detail::onCurvedFlanks(src, planes, support, target);
     detail::onRegionPlanes(src, support, policy.paper, target,
-                           typicalTurns.typicalRad(src, support));
+                           typicalTurns.typicalRad(src, support), bent,
+                           opt.rules.feature.maxFeatureOffPlaneSpacings);
   }
   return outcome;
 }
