@@ -386,7 +386,8 @@ namespace detail {
 
 /// Moves `target`, the placement between the planes fitted next to the
 /// feature, onto the sources' regions' own planes (SupportPlanes::
-/// regionPlanes) where every source's region is a plane and the placement
+/// regionPlanes) where every source's region is a plane (at a `bent` vertex,
+/// beside a curved flank too: see below) and the placement
 /// between those planes lies more than ExtendedSettings::kMinShiftSpacings and at most one
 /// sample spacing from `target` (the vetoes judged the move from there),
 /// and where each source's fitted plane turns by at most ExtendedSettings::kOwnPlaneMaxTurnRad
@@ -429,11 +430,10 @@ inline void onRegionPlanes(const InsertedVertexSource &src, const SupportPlanes 
     const Plane fit = support.plane(src.original[i]);
     const Plane *regionPlane = ownPlane(support.region[src.original[i]]);
     if (!regionPlane && !bent) return;
-    const bool modelsFlank =
-        regionPlane && !(maxOffPlaneSpacings >= 0 &&
-                         std::abs(regionPlane->normal * (fit.point - regionPlane->point)) >
-                             maxOffPlaneSpacings * support.sampleSpacing);
-    own[i] = modelsFlank ? *regionPlane : fit;
+    const bool farFromSamples = regionPlane && maxOffPlaneSpacings >= 0 &&
+                                std::abs(regionPlane->normal * (fit.point - regionPlane->point)) >
+                                    maxOffPlaneSpacings * support.sampleSpacing;
+    own[i] = regionPlane && !farFromSamples ? *regionPlane : fit;
   }
   // An edge vertex's two sources list up to three nearby regions each.
   constexpr int kMaxEnds = 6;
