@@ -5,9 +5,11 @@ Runs `edge-sharpener` of the build BEFORE and of the build AFTER on every input 
 cached (BUILD/quality-cache/inputs, and its own marching cubes, generated/*_mc1.ply), byte-
 compares the two outputs, and measures those that differ against their reference as the
 benchmark does (mesh-distance --sampling meshlab, 100,000 samples a side; a million when an
-output is within 2% of its input's figures). Prints one line per changed output: half, input,
-the input's / before's / after's max and RMS (% of the diagonal), and whether the after is worse
-than its input (max up or RMS up) when the before was not (NEWLY-WORSE).
+output is within 2% of its input's figures, or its max 2% above the before's; the largest of
+three seeds' figures when it is then worse than its input or still 2% above). Prints one line
+per changed output: half, input, the input's / before's / after's max and RMS (% of the
+diagonal), and whether the after is worse than its input (max up or RMS up) when the before was
+not (NEWLY-WORSE).
 
 Run: /usr/bin/python3 bench/study/compare_builds.py BEFORE/apps/edge-sharpener \\
          [--after AFTER] [--build build] [--shared ../shared/meshes] [--match REGEX]
@@ -25,6 +27,7 @@ from concurrent.futures import ThreadPoolExecutor
 from evidence_study import cached_inputs, model_of, references
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
+SEEDS = (None, 1, 2)  # None: mesh-distance's default, MeshLab's own
 
 
 def main():
@@ -45,11 +48,17 @@ def main():
     inputs = cached_inputs(str(cache), args.match)
     refs = references(str(cache), args.shared)
 
-    def measure(mesh, ref, samples=100000):
-        out = subprocess.run([distance, "--json", "--sampling", "meshlab", "--samples",
-                              str(samples), mesh, ref], capture_output=True, text=True, check=True)
-        d = json.loads(out.stdout)["symmetric"]
-        return d["max_percent"], d["rms_percent"]
+    def measure(mesh, ref, samples=100000, seeds=(None,)):
+        """Max and RMS (% of the diagonal); with several seeds, the largest of each."""
+        figures = []
+        for seed in seeds:
+            out = subprocess.run([distance, "--json", "--sampling", "meshlab", "--samples",
+                                  str(samples), mesh, ref] +
+                                 ([] if seed is None else ["--seed", str(seed)]),
+                                 capture_output=True, text=True, check=True)
+            d = json.loads(out.stdout)["symmetric"]
+            figures.append((d["max_percent"], d["rms_percent"]))
+        return max(f[0] for f in figures), max(f[1] for f in figures)
 
     def compare(path, tmp):
         ref = refs.get(model_of(path))
@@ -63,8 +72,12 @@ def main():
             if ref is None or filecmp.cmp(a, b, shallow=False):
                 return None
             i, x, y = measure(path, ref), measure(a, ref), measure(b, ref)
-            if y[0] > 0.98 * i[0] or y[1] > 0.98 * i[1]:
+            if y[0] > 0.98 * i[0] or y[1] > 0.98 * i[1] or y[0] > 1.02 * x[0]:
                 i, x, y = measure(path, ref, 10**6), measure(a, ref, 10**6), measure(b, ref, 10**6)
+            if y[0] > i[0] or y[1] > i[1] or y[0] > 1.02 * x[0]:
+                # A Montecarlo sampling finds a narrow peak of the distance by chance, and
+                # another output's face areas move every sample: the largest over three seeds.
+                i, x, y = (measure(m, ref, 10**6, SEEDS) for m in (path, a, b))
             return path, i, x, y
         finally:
             for f in (a, b):

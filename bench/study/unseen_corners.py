@@ -6,8 +6,9 @@ the grid, remeshes each with OpenVDB (bench/samplers/vdb-remesh, plain and --pro
 voxel remesh) at 0.5% and 1% of the diagonal, sharpens every input with two builds' default
 method, and prints the input's and both outputs' max and RMS (% of the diagonal; mesh-distance
 --sampling meshlab, 100,000 samples a side, both ways as the benchmark reads them) with whether
-the outputs differ. No threshold is chosen on it: it says whether a change found on the
-benchmark's corners carries to corners nobody tuned on.
+the outputs differ (where the after's max is 2% above the before's or the input's, all three
+measured again at a million samples, the largest of three seeds). No threshold is chosen on it:
+it says whether a change found on the benchmark's corners carries to corners nobody tuned on.
 
 Run: /usr/bin/python3 bench/study/unseen_corners.py BEFORE/apps/edge-sharpener [--build build]
 (AFTER is --build's edge-sharpener.) Needs Debian's python3-numpy and an OpenVDB build.
@@ -69,14 +70,20 @@ def write_ply(path, verts, faces):
             f.write(struct.pack("<B3i", 3, *t))
 
 
-def distance(tool, mesh, reference):
-    """(max, RMS) in % of the reference's diagonal, both ways as the benchmark reads them."""
-    out = subprocess.run([str(tool), str(mesh), str(reference), "--json", "--sampling", "meshlab",
-                          "--samples", "100000"], check=True, capture_output=True).stdout
-    d = json.loads(out)
-    f, b = d["forward"], d["backward"]
-    return (max(f["max_percent"], b["max_percent"]),
-            math.sqrt((f["rms_percent"] ** 2 + b["rms_percent"] ** 2) / 2))
+def distance(tool, mesh, reference, samples=100000, seeds=(None,)):
+    """(max, RMS) in % of the reference's diagonal, both ways as the benchmark reads them; with
+    several seeds, the largest of each."""
+    figures = []
+    for seed in seeds:
+        out = subprocess.run([str(tool), str(mesh), str(reference), "--json", "--sampling",
+                              "meshlab", "--samples", str(samples)] +
+                             ([] if seed is None else ["--seed", str(seed)]),
+                             check=True, capture_output=True).stdout
+        d = json.loads(out)
+        f, b = d["forward"], d["backward"]
+        figures.append((max(f["max_percent"], b["max_percent"]),
+                        math.sqrt((f["rms_percent"] ** 2 + b["rms_percent"] ** 2) / 2)))
+    return max(f[0] for f in figures), max(f[1] for f in figures)
 
 
 def main():
@@ -109,6 +116,11 @@ def main():
                     base = distance(meter, mesh, reference)
                     before = distance(meter, outs[0], reference)
                     now = before if same else distance(meter, outs[1], reference)
+                    if not same and (now[0] > 1.02 * before[0] or now[0] > 1.02 * base[0]):
+                        # A Montecarlo sampling finds a narrow peak by chance, and another
+                        # output's face areas move every sample: the largest over three seeds.
+                        base, before, now = (distance(meter, m, reference, 10**6, (None, 1, 2))
+                                             for m in (mesh, outs[0], outs[1]))
                     is_worse = now[0] > base[0] * 1.02 or now[1] > base[1] * 1.01
                     total += 1
                     changed += not same
