@@ -24,10 +24,9 @@ import subprocess
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
-from evidence_study import cached_inputs, model_of, references
+from evidence_study import SEEDS, cached_inputs, metro, model_of, references
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-SEEDS = (None, 1, 2)  # None: mesh-distance's default, MeshLab's own
 
 
 def main():
@@ -48,18 +47,6 @@ def main():
     inputs = cached_inputs(str(cache), args.match)
     refs = references(str(cache), args.shared)
 
-    def measure(mesh, ref, samples=100000, seeds=(None,)):
-        """Max and RMS (% of the diagonal); with several seeds, the largest of each."""
-        figures = []
-        for seed in seeds:
-            out = subprocess.run([distance, "--json", "--sampling", "meshlab", "--samples",
-                                  str(samples), mesh, ref] +
-                                 ([] if seed is None else ["--seed", str(seed)]),
-                                 capture_output=True, text=True, check=True)
-            d = json.loads(out.stdout)["symmetric"]
-            figures.append((d["max_percent"], d["rms_percent"]))
-        return max(f[0] for f in figures), max(f[1] for f in figures)
-
     def compare(path, tmp):
         ref = refs.get(model_of(path))
         stem = os.path.join(tmp, os.path.basename(path))
@@ -71,13 +58,11 @@ def main():
                 return None if ra == rb else (path, f"exit {ra} before, {rb} after")
             if ref is None or filecmp.cmp(a, b, shallow=False):
                 return None
-            i, x, y = measure(path, ref), measure(a, ref), measure(b, ref)
+            i, x, y = metro(distance, path, ref), metro(distance, a, ref), metro(distance, b, ref)
             if y[0] > 0.98 * i[0] or y[1] > 0.98 * i[1] or y[0] > 1.02 * x[0]:
-                i, x, y = measure(path, ref, 10**6), measure(a, ref, 10**6), measure(b, ref, 10**6)
+                i, x, y = (metro(distance, m, ref, 10**6) for m in (path, a, b))
             if y[0] > i[0] or y[1] > i[1] or y[0] > 1.02 * x[0]:
-                # A Montecarlo sampling finds a narrow peak of the distance by chance, and
-                # another output's face areas move every sample: the largest over three seeds.
-                i, x, y = (measure(m, ref, 10**6, SEEDS) for m in (path, a, b))
+                i, x, y = (metro(distance, m, ref, 10**6, SEEDS) for m in (path, a, b))
             return path, i, x, y
         finally:
             for f in (a, b):

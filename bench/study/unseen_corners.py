@@ -15,7 +15,6 @@ Run: /usr/bin/python3 bench/study/unseen_corners.py BEFORE/apps/edge-sharpener [
 """
 import argparse
 import filecmp
-import json
 import math
 import pathlib
 import struct
@@ -23,6 +22,8 @@ import subprocess
 import tempfile
 
 import numpy as np
+
+from evidence_study import SEEDS, metro
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
@@ -70,22 +71,6 @@ def write_ply(path, verts, faces):
             f.write(struct.pack("<B3i", 3, *t))
 
 
-def distance(tool, mesh, reference, samples=100000, seeds=(None,)):
-    """(max, RMS) in % of the reference's diagonal, both ways as the benchmark reads them; with
-    several seeds, the largest of each."""
-    figures = []
-    for seed in seeds:
-        out = subprocess.run([str(tool), str(mesh), str(reference), "--json", "--sampling",
-                              "meshlab", "--samples", str(samples)] +
-                             ([] if seed is None else ["--seed", str(seed)]),
-                             check=True, capture_output=True).stdout
-        d = json.loads(out)
-        f, b = d["forward"], d["backward"]
-        figures.append((max(f["max_percent"], b["max_percent"]),
-                        math.sqrt((f["rms_percent"] ** 2 + b["rms_percent"] ** 2) / 2)))
-    return max(f[0] for f in figures), max(f[1] for f in figures)
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("before", help="the other build's edge-sharpener")
@@ -113,13 +98,11 @@ def main():
                         outs.append(tmp / f"out{i}.ply")
                         subprocess.run([str(tool), str(mesh), str(outs[-1]), "-q"], check=True)
                     same = filecmp.cmp(outs[0], outs[1], shallow=False)
-                    base = distance(meter, mesh, reference)
-                    before = distance(meter, outs[0], reference)
-                    now = before if same else distance(meter, outs[1], reference)
+                    base = metro(meter, mesh, reference)
+                    before = metro(meter, outs[0], reference)
+                    now = before if same else metro(meter, outs[1], reference)
                     if not same and (now[0] > 1.02 * before[0] or now[0] > 1.02 * base[0]):
-                        # A Montecarlo sampling finds a narrow peak by chance, and another
-                        # output's face areas move every sample: the largest over three seeds.
-                        base, before, now = (distance(meter, m, reference, 10**6, (None, 1, 2))
+                        base, before, now = (metro(meter, m, reference, 10**6, SEEDS)
                                              for m in (mesh, outs[0], outs[1]))
                     is_worse = now[0] > base[0] * 1.02 or now[1] > base[1] * 1.01
                     total += 1
