@@ -2,8 +2,8 @@
 // sample spacings (the median edge length), one number for the mesh. When the
 // connected parts of a mesh are sampled at spacings that differ by more than
 // kPartSpacingRatio, each such part is brought to the spacing of the largest
-// for the run (scaled about its box and laid beside the mesh, so that no two
-// overlap) and put back after: each part is then judged at its own spacing. The
+// for the run (scaled about its box and laid beside the other parts, so that
+// no two overlap) and put back after: each part is then judged at its own spacing. The
 // vertices the run did not move get their input coordinates back bit for bit.
 #pragma once
 
@@ -128,28 +128,37 @@ class PartScales {
  private:
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 
-  /// Scales each rescaled part about its box's minimum corner and lays it
-  /// beyond the mesh's box along x, the parts apart by a tenth of the
-  /// largest size; the other parts stay where they are.
+  /// Scales each rescaled part about its box's minimum corner and lays them
+  /// in a row along x beside the box of the parts that keep their scale, on
+  /// the side where the row's coordinates are the smaller, the parts apart by
+  /// a tenth of the largest size: float coordinates round in proportion to
+  /// their size, and a part brought down in scale far from the origin would
+  /// round at a larger fraction of its spacing than in its own run.
   void place() {
     origin_.assign(parts_, vcg::Point3d(0, 0, 0));
     offset_.assign(parts_, vcg::Point3d(0, 0, 0));
     std::vector<vcg::Box3d> box(parts_);
-    vcg::Box3d all;
+    vcg::Box3d kept;
     for (std::size_t v = 0; v < inputVertices_; ++v) {
       const vcg::Point3d q = vcg::Point3d::Construct(m_.vert[v].cP());
       box[part_[v]].Add(q);
-      all.Add(q);
+      if (scale_[part_[v]] == 1) kept.Add(q);
     }
-    double gap = all.Diag();
+    double gap = kept.Diag();
     for (std::size_t p = 0; p < parts_; ++p)
       if (scale_[p] != 1) gap = std::max(gap, box[p].Diag() * scale_[p]);
     gap *= 0.1;
-    double x = all.max.X() + gap;
+    double row = -gap;  // the row's length along x
+    for (std::size_t p = 0; p < parts_; ++p)
+      if (scale_[p] != 1) row += box[p].DimX() * scale_[p] + gap;
+    const double after = kept.max.X() + gap, before = kept.min.X() - gap - row;
+    const double largestAfter = std::max(std::abs(after), std::abs(after + row));
+    const double largestBefore = std::max(std::abs(before), std::abs(before + row));
+    double x = largestBefore < largestAfter ? before : after;
     for (std::size_t p = 0; p < parts_; ++p) {
       if (scale_[p] == 1) continue;
       origin_[p] = box[p].min;
-      offset_[p] = vcg::Point3d(x, all.min.Y(), all.min.Z());
+      offset_[p] = vcg::Point3d(x, kept.min.Y(), kept.min.Z());
       x += box[p].DimX() * scale_[p] + gap;
     }
     input_.resize(inputVertices_);
