@@ -447,7 +447,9 @@ TEST(NearestPointBehindPlanes, NoPointBehindThemAllIsNearer) {
       const Vec3 q = *nearest + Vec3(g(rng), g(rng), g(rng)) * 0.05;
       bool behind = true;
       for (const Plane &plane : planes) behind = behind && planeOffset(plane, q) <= 0;
-      if (behind) EXPECT_GE((q - p).Norm(), d - 1e-9);
+      if (behind) {
+        EXPECT_GE((q - p).Norm(), d - 1e-9);
+      }
     }
   }
 }

@@ -372,7 +372,9 @@ TEST(VerdictColors, PaintWhatTheRunDid) {
     const std::size_t n = facesOfColor(painted, es::verdictColor(es::Verdict(i)));
     leftFaces += n;
     leftVerdicts += r.evidence.verdicts[i] > 0;
-    if (r.evidence.verdicts[i] == 0) EXPECT_EQ(n, 0u) << es::toString(es::Verdict(i));
+    if (r.evidence.verdicts[i] == 0) {
+      EXPECT_EQ(n, 0u) << es::toString(es::Verdict(i));
+    }
   }
   EXPECT_GT(leftVerdicts, 0u) << "bevelled_block has features left: the test needs them";
   EXPECT_GT(leftFaces, 0u);
