@@ -148,9 +148,20 @@ class AutoMethod {
     const std::vector<char> placedWhole = guard_->placedWholeVertices();
     guards.cleanup = removeDegenerateTriangles(m_, moves, opt_.degenerateAngleRad,
                                                /*onlyWhereMoved=*/true, &placedWhole);
+    const double spacing = spacingUnit(zones_.support);
+    FoldSettings folds;
+    folds.planeTolerance = VertexRules::kFoldPlaneSpacings * spacing;
+    folds.minAngleRad = opt_.degenerateAngleRad;
+    folds.exactTolerance = opt_.rules.mesh.exactSamplingSpacings * spacing;
+    folds.parallelAngleRad = opt_.paper.parallelAngleRad;
+    folds.relaxRings = opt_.extended.maxLabelHops;  // a fold sharpening made lies in its zone
     guards.planarFolds = unfoldPlanarPatches(
         m_, [&](std::size_t v) { return !moves.isAtRest(v); },
-        VertexRules::kFoldPlaneSpacings * spacingUnit(zones_.support), opt_.degenerateAngleRad);
+        [&](const auto *vp) {
+          const std::size_t v = vcg::tri::Index(m_, vp);
+          return moves.hasRest(v) ? Vec3::Construct(moves.storedRest(v)) : positionOf(vp);
+        },
+        folds);
     guards.intersections = revertSelfIntersections(m_, moves, opt_.degenerateAngleRad,
                                                    longestInputEdge, &guard_->retreatFirst());
     return guards;

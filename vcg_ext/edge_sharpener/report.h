@@ -79,6 +79,7 @@ struct CleanupStats {
 struct PlanarFoldStats {
   std::size_t folds = 0;    ///< faces with a moved vertex folded over a neighbour on one plane
   std::size_t patches = 0;  ///< flat patches around them tiled again without the fold
+  std::size_t relaxedVertices = 0;  ///< vertices moved on the plane of a fold to unfold it
 };
 
 /// Stage 6b: moved vertices sent back to rest because a face of theirs
@@ -277,7 +278,8 @@ inline void formatGuards(std::ostream &s, const SharpenReport &r) {
     << " inherited from input slivers\n";
   if (r.evidenceGuard)
     s << "planar folds: " << r.planarFolds.folds << " folded faces found, " << r.planarFolds.patches
-      << " flat patches tiled again\n";
+      << " flat patches tiled again, " << r.planarFolds.relaxedVertices
+      << " vertices moved on a fold's plane\n";
   s << "self-intersections: " << r.intersections.intersectingPairs
     << " intersecting face pairs found, " << r.intersections.reverted
     << " inserted vertices reverted";

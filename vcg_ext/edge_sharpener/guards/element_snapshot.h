@@ -166,7 +166,10 @@ class InputFaces {
       VertexType *b = &m.vert[plan.inserted[k].original[1]];
       std::array<Side, 2> sides;
       if (!findSides(v, a, b, around.faces[k], sides) ||
-          !liesOnSegment(positionOf(v), positionOf(a), positionOf(b)))
+          !liesOnSegment(positionOf(v), positionOf(a), positionOf(b)) ||
+          // merging v into a collapses edge (a, v): not where a and b are
+          // joined already (the collapse would give edge (a, b) a third face)
+          !detail::linkConditionHolds(*sides[0].withA, edgeIndex(*sides[0].withA, a, v)))
         continue;
       mergeSides(m, v, a, sides);
       ++removed;

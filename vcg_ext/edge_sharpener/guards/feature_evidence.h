@@ -117,14 +117,7 @@ inline double moveLift(const Vec3 &target, const Vec3 &rest,
                        const std::vector<vcg::Triangle3<double>> &triangles) {
   const double length = (target - rest).Norm();
   if (!(length > 0) || triangles.empty()) return 1;
-  double nearest = length;
-  for (const auto &t : triangles) {
-    double d;
-    Vec3 closest;
-    vcg::TrianglePointDistance(t, target, d, closest);
-    nearest = std::min(nearest, d);
-  }
-  return nearest / length;
+  return std::min(length, distanceToTriangles(target, triangles)) / length;
 }
 
 /// The input's surface, for measuring lifts after the subdivision: each input

@@ -10,6 +10,8 @@
 #pragma once
 
 #include <vcg/complex/complex.h>
+#include <vcg/simplex/face/pos.h>
+#include <vcg/simplex/face/topology.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -200,6 +202,50 @@ void linkFaceEdges(MeshType &m, std::vector<FaceEdgeKey> &edges) {
     link(edges[run - 1], edges[e]);
     e = run;
   }
+}
+
+/// Vertex `z` of face `f` seen from the faces around it: the vertices joined
+/// to it by an edge, and whether a border edge ends at it. vcglib's
+/// VVOrderedStarFF takes one vertex per face, so at a border vertex (k
+/// faces, k + 1 neighbours) it misses one.
+template <class FaceType>
+struct VertexStar {
+  std::vector<typename FaceType::VertexType *> neighbours;
+  bool onBorder = false;
+
+  VertexStar(FaceType &f, int z) {
+    using Pos = vcg::face::Pos<FaceType>;
+    auto *v = f.V(z);
+    std::vector<Pos> star;
+    vcg::face::VFOrderedStarFF(Pos(&f, z, v), star);
+    for (const Pos &p : star) {
+      FaceType *h = p.F();
+      for (int j = 0; j < 3; ++j) {
+        auto *u = h->V(j);
+        if (u == v) {
+          onBorder |= h->FFp(j) == h || h->FFp((j + 2) % 3) == h;
+        } else if (std::find(neighbours.begin(), neighbours.end(), u) == neighbours.end()) {
+          neighbours.push_back(u);
+        }
+      }
+    }
+  }
+};
+
+/// The link condition of edge z of face f (Dey et al.; what
+/// vcg::face::FFLinkCondition tests, with every neighbour of a border
+/// vertex): collapsing it keeps the mesh 2-manifold when its ends share no
+/// neighbour but the vertices opposite the edge, and, for an edge between
+/// faces, are not both on a border.
+template <class FaceType>
+bool linkConditionHolds(FaceType &f, int z) {
+  const bool borderEdge = f.FFp(z) == &f;
+  const VertexStar<FaceType> end0(f, z), end1(f, (z + 1) % 3);
+  std::size_t shared = 0;
+  for (auto *u : end0.neighbours)
+    shared += std::find(end1.neighbours.begin(), end1.neighbours.end(), u) != end1.neighbours.end();
+  if (shared != (borderEdge ? 1u : 2u)) return false;
+  return borderEdge || !(end0.onBorder && end1.onBorder);
 }
 
 }  // namespace edge_sharpener::detail

@@ -6,7 +6,9 @@
 // triangle ABC adds the plane R through C with unit normal L.
 #pragma once
 
+#include <vcg/space/distance3.h>
 #include <vcg/space/point3.h>
+#include <vcg/space/triangle3.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -231,6 +233,19 @@ inline double minTriangleAngle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
 /// Normal of triangle abc, scaled by twice its area (zero when degenerate).
 inline Vec3 triangleNormal(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
   return (b - a) ^ (c - a);
+}
+
+/// The distance from `p` to the nearest of `triangles` (infinite if none).
+inline double distanceToTriangles(const Vec3 &p,
+                                  const std::vector<vcg::Triangle3<double>> &triangles) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto &t : triangles) {
+    double d;
+    Vec3 closest;
+    vcg::TrianglePointDistance(t, p, d, closest);
+    nearest = std::min(nearest, d);
+  }
+  return nearest;
 }
 
 /// Largest interior angle of triangle abc in radians.
