@@ -69,6 +69,13 @@ def model_of(path):
     return name.split("__")[0] if "__" in name else name[:-len("_mc1.ply")]
 
 
+def family_of(path):
+    """The sampler family a cached input was made by (`umr`, `vdbproj`, `scan`, ...; `mc` for the
+    benchmark's own marching cubes)."""
+    name = os.path.basename(path)
+    return name.split("__")[1].split("_")[0] if "__" in name else "mc"
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--build", default=os.path.join(SOURCE, "build"))

@@ -19,7 +19,7 @@ import pathlib
 import numpy as np
 import open3d as o3d
 
-from evidence_study import cached_inputs
+from evidence_study import cached_inputs, family_of
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FOLD_MAX_COS = -0.5  # VertexRules::kFoldMaxCos
@@ -40,13 +40,6 @@ def folded_faces(path):
     a, b = faces[:-1][same], faces[1:][same]
     folded = np.einsum("ij,ij->i", normals[a], normals[b]) <= FOLD_MAX_COS
     return len(np.unique(np.concatenate([a[folded], b[folded]]))), len(t)
-
-
-def family_of(path):
-    name = os.path.basename(path)
-    if "__" not in name:
-        return "mc"
-    return name.split("__")[1].rsplit("_", 1)[0]
 
 
 def main():
