@@ -382,3 +382,65 @@ TEST(PlanarFolds, AFoldTheInputHasStays) {
   for (std::size_t v = 0; v < positions.size(); ++v)
     EXPECT_EQ(es::positionOf(&roof.m.vert[v]), positions[v]) << "vertex " << v;
 }
+
+namespace {
+
+/// A unit cube, six squares a side, with a vertex of its top (z = 1) moved
+/// across the diagonal of a square beside it: that square's face turns over,
+/// as it came (a fold the input has, as a cast onto a surface leaves).
+struct FoldedCubeTop {
+  es::Mesh m;
+  FoldedCubeTop() {
+    hb::voxelSurface(m, {{0, 0, 0}}, 6);
+    m.vert[at(3, 2, 6)].P() = es::Mesh::CoordType(2.4f / 6, 2.6f / 6, 1);
+  }
+  /// The index of the vertex at grid point (i, j, k) / 6.
+  std::size_t at(int i, int j, int k) const {
+    for (std::size_t v = 0; v < m.vert.size(); ++v)
+      if (m.vert[v].cP() == es::Mesh::CoordType(i / 6.f, j / 6.f, k / 6.f)) return v;
+    ADD_FAILURE() << "no vertex at " << i << ", " << j << ", " << k;
+    return 0;
+  }
+  /// The stage on this mesh as it came, with vertex `moved` the one moved.
+  es::PlanarFoldStats unfoldWithMoved(std::size_t moved) {
+    return es::unfoldPlanarPatches(
+        m, [moved](std::size_t v) { return v == moved; }, restAt(m, {}), settings(1e-6, 1e-6));
+  }
+  /// Whether every face of the top faces up (+z).
+  bool topFacesUp() const {
+    for (const auto &f : m.face)
+      if (f.cP(0)[2] == 1 && f.cP(1)[2] == 1 && f.cP(2)[2] == 1 && hb::areaNormal(f)[2] <= 0)
+        return false;
+    return true;
+  }
+};
+
+}  // namespace
+
+TEST(PlanarFolds, AFoldTheInputHasNextToAMovedFaceIsTiledAgain) {
+  // Sharpening moved a vertex of a face next to the input's fold: the flat
+  // patch around it is tiled again, as if the fold were sharpening's own.
+  FoldedCubeTop t;
+  ASSERT_FALSE(t.topFacesUp()) << "the set-up: folded";
+  // (3, 4) is in face ((2, 3), (3, 3), (3, 4)), next to the unfolded face
+  // ((2, 2), (3, 3), (2, 3)) that the turned-over face ((2, 2), (3, 2)
+  // moved, (3, 3)) is folded over.
+  const es::PlanarFoldStats stats = t.unfoldWithMoved(t.at(3, 4, 6));
+  EXPECT_GE(stats.folds, 1u);
+  EXPECT_GE(stats.patches, 1u);
+  EXPECT_EQ(stats.relaxedVertices, 0u);
+  EXPECT_TRUE(t.topFacesUp());
+  EXPECT_TRUE(hb::closedOrientedManifold(t.m));
+}
+
+TEST(PlanarFolds, AFoldTheInputHasFarFromAnyMovedFaceStays) {
+  // The same fold, with only a vertex of the bottom moved: meshes the
+  // method leaves whole pass as they came, their folds included.
+  FoldedCubeTop t;
+  const auto before = faceVertices(t.m);
+  const es::PlanarFoldStats stats = t.unfoldWithMoved(t.at(3, 3, 0));
+  EXPECT_EQ(stats.folds, 0u);
+  EXPECT_EQ(stats.patches, 0u);
+  EXPECT_EQ(faceVertices(t.m), before);
+  EXPECT_FALSE(t.topFacesUp());
+}

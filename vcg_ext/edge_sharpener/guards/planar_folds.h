@@ -606,9 +606,11 @@ bool foldedAt(const FaceType &f, int j, const RestOf &restOf) {
 
 }  // namespace detail
 
-/// Finds the faces with a moved vertex (`isMoved(vertex index)`) folded
-/// over a neighbour on one plane (detail::foldedOnPlane, within
-/// `settings.planeTolerance`) and tiles the flat patch around each fold again
+/// Finds the faces folded over a neighbour on one plane
+/// (detail::foldedOnPlane, within `settings.planeTolerance`) that have a
+/// moved vertex (`isMoved(vertex index)`) or an edge neighbour with one (the
+/// input's own folds beside a sharpened face too; folds far from any stay as
+/// they came) and tiles the flat patch around each fold again
 /// (detail::unfoldAround), tiles with angles of at least `minAngleRad`;
 /// where no tiling does, and the two faces are not folded with every vertex
 /// at `restOf(vertex)` (a fold the input has stays), moves the vertices up
@@ -635,7 +637,10 @@ PlanarFoldStats unfoldPlanarPatches(MeshType &m, const IsMoved &isMoved, const R
       [&](std::int64_t fi) {
         const FaceType &f = m.face[fi];
         if (f.IsD()) return false;
-        if (!moved[f.cV(0) - first] && !moved[f.cV(1) - first] && !moved[f.cV(2) - first])
+        const auto hasMoved = [&](const FaceType &g) {
+          return moved[g.cV(0) - first] || moved[g.cV(1) - first] || moved[g.cV(2) - first];
+        };
+        if (!hasMoved(f) && !hasMoved(*f.cFFp(0)) && !hasMoved(*f.cFFp(1)) && !hasMoved(*f.cFFp(2)))
           return false;
         for (int j = 0; j < 3; ++j)
           if (detail::foldedOnPlane(f, j, tolerance)) return true;
