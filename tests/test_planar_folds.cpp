@@ -444,3 +444,15 @@ TEST(PlanarFolds, AFoldTheInputHasFarFromAnyMovedFaceStays) {
   EXPECT_EQ(faceVertices(t.m), before);
   EXPECT_FALSE(t.topFacesUp());
 }
+
+TEST(PlanarFolds, AFoldIsTiledAgainAcrossWhicheverOfItsEdgesAPatchIs) {
+  // (2, 1) is in face ((2, 1), (3, 2) moved, (2, 2)), which the turned-over
+  // face ((2, 2), (3, 2) moved, (3, 3)) is folded over across its first
+  // edge: the patch of those two crosses itself. The turned-over face tiles
+  // across another of its edges (that face beside it is not seeded here).
+  FoldedCubeTop t;
+  const es::PlanarFoldStats stats = t.unfoldWithMoved(t.at(2, 1, 6));
+  EXPECT_GE(stats.patches, 1u);
+  EXPECT_TRUE(t.topFacesUp());
+  EXPECT_TRUE(hb::closedOrientedManifold(t.m));
+}

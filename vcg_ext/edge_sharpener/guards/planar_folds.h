@@ -611,7 +611,8 @@ bool foldedAt(const FaceType &f, int j, const RestOf &restOf) {
 /// moved vertex (`isMoved(vertex index)`) or an edge neighbour with one (the
 /// input's own folds beside a sharpened face too; folds far from any stay as
 /// they came) and tiles the flat patch around each fold again
-/// (detail::unfoldAround), tiles with angles of at least `minAngleRad`;
+/// (detail::unfoldAround, across each edge the face is folded over until one
+/// patch is), tiles with angles of at least `minAngleRad`;
 /// where no tiling does, and the two faces are not folded with every vertex
 /// at `restOf(vertex)` (a fold the input has stays), moves the vertices up
 /// to `relaxRings` rings around the fold on the planes or lines their faces
@@ -652,15 +653,21 @@ PlanarFoldStats unfoldPlanarPatches(MeshType &m, const IsMoved &isMoved, const R
   for (const std::uint32_t fi : folded) {
     FaceType *f = &m.face[fi];
     ++stats.folds;
-    for (int j = 0; j < 3; ++j)  // a patch tiled before may have taken this fold away
+    // Across each edge it is folded over (a patch tiled before may have
+    // taken the fold away) until a patch there is tiled again.
+    int firstFold = -1;
+    bool tiled = false;
+    for (int j = 0; j < 3 && !tiled; ++j)
       if (detail::foldedOnPlane(*f, j, tolerance)) {
-        if (detail::unfoldAround<MeshType>(f, j, tolerance, settings.minAngleRad,
-                                           VertexRules::kMaxFoldPatchFaces))
-          ++stats.patches;
-        else if (!detail::foldedAt(*f, j, restOf))  // a fold the input has stays
-          stats.relaxedVertices += detail::relaxFlatFold<MeshType>(f, j, settings, settled, first);
-        break;
+        if (firstFold < 0) firstFold = j;
+        tiled = detail::unfoldAround<MeshType>(f, j, tolerance, settings.minAngleRad,
+                                               VertexRules::kMaxFoldPatchFaces);
       }
+    if (tiled)
+      ++stats.patches;
+    else if (firstFold >= 0 && !detail::foldedAt(*f, firstFold, restOf))  // the input's stays
+      stats.relaxedVertices +=
+          detail::relaxFlatFold<MeshType>(f, firstFold, settings, settled, first);
   }
   return stats;
 }
