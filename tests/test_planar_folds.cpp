@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <functional>
-#include <map>
 #include <vector>
 
 #include "edge_sharpener/guards/planar_folds.h"
@@ -30,16 +29,6 @@ double tiledArea(const std::vector<es::Vec2> &polygon,
 
 constexpr double kMinAngle = 1.0 * M_PI / 180.0;
 constexpr double kParallel = 1.0 * M_PI / 180.0;
-
-/// Rest positions for unfoldPlanarPatches: each vertex of `m` where it is
-/// now, those in `elsewhere` where they rested before they were moved.
-std::function<es::Vec3(const es::Mesh::VertexType *)> restAt(
-    const es::Mesh &m, const std::map<std::size_t, es::Vec3> &elsewhere) {
-  std::vector<es::Vec3> rest;
-  for (const auto &v : m.vert) rest.push_back(es::positionOf(&v));
-  for (const auto &[v, p] : elsewhere) rest[v] = p;
-  return [&m, rest](const es::Mesh::VertexType *v) { return rest[vcg::tri::Index(m, v)]; };
-}
 
 /// The stage's settings with a fold's plane within `tolerance` and the
 /// exact one within `exactTolerance`, vertices moving up to 3 rings out.
@@ -117,8 +106,6 @@ struct FoldedTop {
                   {3, 2, 4},
                   {0, 3, 4}});
   }
-  /// C rested at (1, 1, 0), the top a convex quad, unfolded.
-  auto rest() const { return restAt(m, {{2, es::Vec3(1, 1, 0)}}); }
 };
 
 }  // namespace
@@ -127,8 +114,7 @@ TEST(PlanarFolds, AFoldedFlatPatchIsTiledAgainOnItsPlane) {
   FoldedTop t;
   EXPECT_LT(hb::areaNormal(t.m.face[1])[2], 0) << "the set-up: (B, C, D) is folded";
   const auto moved = [](std::size_t v) { return v == 2; };  // C
-  const es::PlanarFoldStats stats =
-      es::unfoldPlanarPatches(t.m, moved, t.rest(), settings(1e-9, 1e-9));
+  const es::PlanarFoldStats stats = es::unfoldPlanarPatches(t.m, moved, settings(1e-9, 1e-9));
   EXPECT_GE(stats.folds, 1u);
   EXPECT_EQ(stats.patches, 1u);
   // The top is (A, B, C) and (A, C, D) now, both facing up, on z = 0.
@@ -144,8 +130,7 @@ TEST(PlanarFolds, AFoldedFlatPatchIsTiledAgainOnItsPlane) {
 TEST(PlanarFolds, LeavesAFoldWhoseVerticesAreAtRest) {
   FoldedTop t;
   const auto moved = [](std::size_t) { return false; };
-  const es::PlanarFoldStats stats =
-      es::unfoldPlanarPatches(t.m, moved, t.rest(), settings(1e-9, 1e-9));
+  const es::PlanarFoldStats stats = es::unfoldPlanarPatches(t.m, moved, settings(1e-9, 1e-9));
   EXPECT_EQ(stats.folds, 0u);
   EXPECT_EQ(stats.patches, 0u);
   EXPECT_TRUE(hb::hasEdge(t.m, 1, 3));
@@ -155,8 +140,7 @@ TEST(PlanarFolds, LeavesAFoldOffThePlane) {
   FoldedTop t;
   t.m.vert[2].P()[2] = 0.01f;  // C above the top: not one flat patch
   const auto moved = [](std::size_t v) { return v == 2; };
-  const es::PlanarFoldStats stats =
-      es::unfoldPlanarPatches(t.m, moved, t.rest(), settings(1e-3, 1e-3));
+  const es::PlanarFoldStats stats = es::unfoldPlanarPatches(t.m, moved, settings(1e-3, 1e-3));
   EXPECT_EQ(stats.patches, 0u);
   EXPECT_TRUE(hb::hasEdge(t.m, 1, 3));
   EXPECT_TRUE(hb::closedOrientedManifold(t.m));
@@ -262,8 +246,7 @@ TEST(PlanarFolds, LeavesAVertexMovedOutOfItsOutline) {
   const auto before = faceVertices(m);
   const es::Vec3 e = es::positionOf(&m.vert[4]);
   const auto moved = [](std::size_t v) { return v == 4; };
-  const es::PlanarFoldStats stats = es::unfoldPlanarPatches(
-      m, moved, restAt(m, {{4, es::Vec3(0.5, 0.5, 0)}}), settings(1e-9, 1e-9));
+  const es::PlanarFoldStats stats = es::unfoldPlanarPatches(m, moved, settings(1e-9, 1e-9));
   EXPECT_GE(stats.folds, 1u);
   EXPECT_EQ(stats.patches, 0u);
   EXPECT_EQ(stats.relaxedVertices, 0u);
@@ -339,15 +322,13 @@ TEST(PlanarFolds, VerticesOutOfOrderAlongASharpEdgeSlideAlongIt) {
   // planes, so each moves along the ridge only.
   Roof roof;
   EXPECT_TRUE(facesOutwardFrom(roof.m, {0.5, 0.5, 0.2})) << "the set-up";
-  const auto rest = restAt(roof.m, {});  // as it came: unfolded
   std::swap(roof.m.vert[Roof::kR1].P(), roof.m.vert[Roof::kR2].P());
   EXPECT_FALSE(facesOutwardFrom(roof.m, {0.5, 0.5, 0.2})) << "the set-up: folded";
   const auto before = faceVertices(roof.m);
   std::vector<es::Vec3> positions;
   for (const auto &v : roof.m.vert) positions.push_back(es::positionOf(&v));
   const auto moved = [](std::size_t v) { return v == Roof::kR1 || v == Roof::kR2; };
-  const es::PlanarFoldStats stats =
-      es::unfoldPlanarPatches(roof.m, moved, rest, settings(1e-6, 1e-6));
+  const es::PlanarFoldStats stats = es::unfoldPlanarPatches(roof.m, moved, settings(1e-6, 1e-6));
   EXPECT_GE(stats.folds, 1u);
   EXPECT_EQ(stats.relaxedVertices, 2u);
   EXPECT_EQ(faceVertices(roof.m), before);
@@ -366,18 +347,49 @@ TEST(PlanarFolds, VerticesOutOfOrderAlongASharpEdgeSlideAlongIt) {
   EXPECT_TRUE(hb::closedOrientedManifold(roof.m));
 }
 
-TEST(PlanarFolds, AFoldTheInputHasStays) {
-  // As above, but R1 and R2 came out of order in the input itself: the fold
-  // is the input's, and the vertices stay where they are.
-  Roof roof;
+namespace {
+
+/// The roof with R1 and R2 out of order in the input itself (a fold the
+/// input has), the stage run with `moved` the vertices sharpening moved;
+/// returns the stage's counts, the roof's vertices in `positions` before.
+es::PlanarFoldStats unfoldInputRoof(Roof &roof, const std::function<bool(std::size_t)> &moved,
+                                    std::vector<es::Vec3> &positions) {
   std::swap(roof.m.vert[Roof::kR1].P(), roof.m.vert[Roof::kR2].P());
-  const auto rest = restAt(roof.m, {});  // as it came: folded
-  std::vector<es::Vec3> positions;
   for (const auto &v : roof.m.vert) positions.push_back(es::positionOf(&v));
-  const auto moved = [](std::size_t v) { return v == Roof::kR1 || v == Roof::kR2; };
-  const es::PlanarFoldStats stats =
-      es::unfoldPlanarPatches(roof.m, moved, rest, settings(1e-6, 1e-6));
+  return es::unfoldPlanarPatches(roof.m, moved, settings(1e-6, 1e-6));
+}
+
+}  // namespace
+
+TEST(PlanarFolds, AFoldTheInputHasBesideAMovedFaceSlidesAlongItsEdge) {
+  // As above, but R1 and R2 came out of order in the input, and sharpening
+  // moved R0, whose faces touch the fold's: the input's fold is undone like
+  // one sharpening made (a remesher casting its samples onto a sharp edge
+  // out of order leaves it; the surface does not change).
+  Roof roof;
+  std::vector<es::Vec3> positions;
+  const es::PlanarFoldStats stats = unfoldInputRoof(
+      roof, [](std::size_t v) { return v == 4; }, positions);
   EXPECT_GE(stats.folds, 1u);
+  EXPECT_EQ(stats.relaxedVertices, 2u);
+  const auto &r1 = roof.m.vert[Roof::kR1].cP(), &r2 = roof.m.vert[Roof::kR2].cP();
+  EXPECT_LT(r1[0], r2[0]);
+  for (const auto *p : {&r1, &r2}) {
+    EXPECT_NEAR((*p)[1], 0.5, 1e-6) << "on the ridge";
+    EXPECT_NEAR((*p)[2], 0.5, 1e-6) << "on the ridge";
+  }
+  EXPECT_TRUE(facesOutwardFrom(roof.m, {0.5, 0.5, 0.2}));
+  EXPECT_TRUE(hb::closedOrientedManifold(roof.m));
+}
+
+TEST(PlanarFolds, AFoldTheInputHasFarFromAnyMovedVertexStays) {
+  // The same input with nothing moved: a mesh the method leaves whole
+  // passes as it came, its folds included.
+  Roof roof;
+  std::vector<es::Vec3> positions;
+  const es::PlanarFoldStats stats = unfoldInputRoof(
+      roof, [](std::size_t) { return false; }, positions);
+  EXPECT_EQ(stats.folds, 0u);
   EXPECT_EQ(stats.relaxedVertices, 0u);
   for (std::size_t v = 0; v < positions.size(); ++v)
     EXPECT_EQ(es::positionOf(&roof.m.vert[v]), positions[v]) << "vertex " << v;
@@ -404,7 +416,7 @@ struct FoldedCubeTop {
   /// The stage on this mesh as it came, with vertex `moved` the one moved.
   es::PlanarFoldStats unfoldWithMoved(std::size_t moved) {
     return es::unfoldPlanarPatches(
-        m, [moved](std::size_t v) { return v == moved; }, restAt(m, {}), settings(1e-6, 1e-6));
+        m, [moved](std::size_t v) { return v == moved; }, settings(1e-6, 1e-6));
   }
   /// Whether every face of the top faces up (+z).
   bool topFacesUp() const {

@@ -156,12 +156,7 @@ class AutoMethod {
     folds.parallelAngleRad = opt_.paper.parallelAngleRad;
     folds.relaxRings = opt_.extended.maxLabelHops;  // a fold sharpening made lies in its zone
     guards.planarFolds = unfoldPlanarPatches(
-        m_, [&](std::size_t v) { return !moves.isAtRest(v); },
-        [&](const auto *vp) {
-          const std::size_t v = vcg::tri::Index(m_, vp);
-          return moves.hasRest(v) ? Vec3::Construct(moves.storedRest(v)) : positionOf(vp);
-        },
-        folds);
+        m_, [&](std::size_t v) { return !moves.isAtRest(v); }, folds);
     guards.intersections = revertSelfIntersections(m_, moves, opt_.degenerateAngleRad,
                                                    longestInputEdge, &guard_->retreatFirst());
     return guards;

@@ -593,17 +593,6 @@ bool foldedOnPlane(const FaceType &f, int j, double tolerance) {
          std::abs(ng * farF) <= tolerance * ng.Norm();
 }
 
-/// Whether face f and its neighbour across edge j are folded
-/// (normalsFolded) with each vertex at `restOf(vertex)`: a fold the input has.
-template <class FaceType, class RestOf>
-bool foldedAt(const FaceType &f, int j, const RestOf &restOf) {
-  const FaceType *g = f.cFFp(j);
-  const auto normal = [&](const FaceType &h) {
-    return triangleNormal(restOf(h.cV(0)), restOf(h.cV(1)), restOf(h.cV(2)));
-  };
-  return g != &f && normalsFolded(normal(f), normal(*g));
-}
-
 }  // namespace detail
 
 /// Finds the faces folded over a neighbour on one plane
@@ -612,16 +601,16 @@ bool foldedAt(const FaceType &f, int j, const RestOf &restOf) {
 /// input's own folds beside a sharpened face too; folds far from any stay as
 /// they came) and tiles the flat patch around each fold again
 /// (detail::unfoldAround, across each edge the face is folded over until one
-/// patch is), tiles with angles of at least `minAngleRad`;
-/// where no tiling does, and the two faces are not folded with every vertex
-/// at `restOf(vertex)` (a fold the input has stays), moves the vertices up
-/// to `relaxRings` rings around the fold on the planes or lines their faces
-/// lie on within `exactTolerance` (detail::relaxFlatFold). Needs a closed
+/// patch is), tiles with angles of at least `minAngleRad`. Then, at each
+/// fold no tiling undid, it moves the vertices up to `relaxRings` rings
+/// around it on the planes or lines their faces lie on within
+/// `exactTolerance` (detail::relaxFlatFold): after every tiling, so that no
+/// vertex a relaxation moved changes which outline is tiled. Needs a closed
 /// 2-manifold with FF adjacency up to date; it stays so. Faces keep their
 /// slots and no element is added, so an ElementSnapshot taken before
 /// restores the mesh.
-template <class MeshType, class IsMoved, class RestOf>
-PlanarFoldStats unfoldPlanarPatches(MeshType &m, const IsMoved &isMoved, const RestOf &restOf,
+template <class MeshType, class IsMoved>
+PlanarFoldStats unfoldPlanarPatches(MeshType &m, const IsMoved &isMoved,
                                     const FoldSettings &settings) {
   const double tolerance = settings.planeTolerance;
   using FaceType = typename MeshType::FaceType;
@@ -649,25 +638,30 @@ PlanarFoldStats unfoldPlanarPatches(MeshType &m, const IsMoved &isMoved, const R
       },
       kParallelMin);
   PlanarFoldStats stats;
-  std::vector<char> settled(m.vert.size(), 0);  // relaxed once: held from then on
+  std::vector<std::uint32_t> untiled;
   for (const std::uint32_t fi : folded) {
     FaceType *f = &m.face[fi];
     ++stats.folds;
     // Across each edge it is folded over (a patch tiled before may have
     // taken the fold away) until a patch there is tiled again.
-    int firstFold = -1;
     bool tiled = false;
     for (int j = 0; j < 3 && !tiled; ++j)
-      if (detail::foldedOnPlane(*f, j, tolerance)) {
-        if (firstFold < 0) firstFold = j;
+      if (detail::foldedOnPlane(*f, j, tolerance))
         tiled = detail::unfoldAround<MeshType>(f, j, tolerance, settings.minAngleRad,
                                                VertexRules::kMaxFoldPatchFaces);
-      }
     if (tiled)
       ++stats.patches;
-    else if (firstFold >= 0 && !detail::foldedAt(*f, firstFold, restOf))  // the input's stays
-      stats.relaxedVertices +=
-          detail::relaxFlatFold<MeshType>(f, firstFold, settings, settled, first);
+    else
+      untiled.push_back(fi);
+  }
+  std::vector<char> settled(m.vert.size(), 0);  // relaxed once: held from then on
+  for (const std::uint32_t fi : untiled) {
+    FaceType *f = &m.face[fi];
+    for (int j = 0; j < 3; ++j)
+      if (detail::foldedOnPlane(*f, j, tolerance)) {
+        stats.relaxedVertices += detail::relaxFlatFold<MeshType>(f, j, settings, settled, first);
+        break;
+      }
   }
   return stats;
 }
