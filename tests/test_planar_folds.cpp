@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
 #include <vector>
 
 #include "edge_sharpener/guards/planar_folds.h"
@@ -349,15 +348,11 @@ TEST(PlanarFolds, VerticesOutOfOrderAlongASharpEdgeSlideAlongIt) {
 
 namespace {
 
-/// The roof with R1 and R2 out of order in the input itself (a fold the
-/// input has), the stage run with `moved` the vertices sharpening moved;
-/// returns the stage's counts, the roof's vertices in `positions` before.
-es::PlanarFoldStats unfoldInputRoof(Roof &roof, const std::function<bool(std::size_t)> &moved,
-                                    std::vector<es::Vec3> &positions) {
-  std::swap(roof.m.vert[Roof::kR1].P(), roof.m.vert[Roof::kR2].P());
-  for (const auto &v : roof.m.vert) positions.push_back(es::positionOf(&v));
-  return es::unfoldPlanarPatches(roof.m, moved, settings(1e-6, 1e-6));
-}
+/// The roof with R1 and R2 out of order in the input itself: a fold the
+/// input has.
+struct InputFoldedRoof : Roof {
+  InputFoldedRoof() { std::swap(m.vert[kR1].P(), m.vert[kR2].P()); }
+};
 
 }  // namespace
 
@@ -366,10 +361,9 @@ TEST(PlanarFolds, AFoldTheInputHasBesideAMovedFaceSlidesAlongItsEdge) {
   // moved R0, whose faces touch the fold's: the input's fold is undone like
   // one sharpening made (a remesher casting its samples onto a sharp edge
   // out of order leaves it; the surface does not change).
-  Roof roof;
-  std::vector<es::Vec3> positions;
-  const es::PlanarFoldStats stats = unfoldInputRoof(
-      roof, [](std::size_t v) { return v == 4; }, positions);
+  InputFoldedRoof roof;
+  const es::PlanarFoldStats stats = es::unfoldPlanarPatches(
+      roof.m, [](std::size_t v) { return v == 4; }, settings(1e-6, 1e-6));
   EXPECT_GE(stats.folds, 1u);
   EXPECT_EQ(stats.relaxedVertices, 2u);
   const auto &r1 = roof.m.vert[Roof::kR1].cP(), &r2 = roof.m.vert[Roof::kR2].cP();
@@ -385,10 +379,11 @@ TEST(PlanarFolds, AFoldTheInputHasBesideAMovedFaceSlidesAlongItsEdge) {
 TEST(PlanarFolds, AFoldTheInputHasFarFromAnyMovedVertexStays) {
   // The same input with nothing moved: a mesh the method leaves whole
   // passes as it came, its folds included.
-  Roof roof;
+  InputFoldedRoof roof;
   std::vector<es::Vec3> positions;
-  const es::PlanarFoldStats stats = unfoldInputRoof(
-      roof, [](std::size_t) { return false; }, positions);
+  for (const auto &v : roof.m.vert) positions.push_back(es::positionOf(&v));
+  const es::PlanarFoldStats stats = es::unfoldPlanarPatches(
+      roof.m, [](std::size_t) { return false; }, settings(1e-6, 1e-6));
   EXPECT_EQ(stats.folds, 0u);
   EXPECT_EQ(stats.relaxedVertices, 0u);
   for (std::size_t v = 0; v < positions.size(); ++v)
