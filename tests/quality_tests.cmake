@@ -71,7 +71,8 @@
 #   quality.corner_patch        pyramid, octahedron and hexagonal_pyramid by OpenVDB at 1% and
 #                               0.5%: a corner of four or more faces whose chamfer holds edges
 #                               between faces that touch only there is placed whole at its
-#                               planes' point; max factors against floors, none made worse
+#                               planes' point, and a remesher's vertex on an edge goes onto
+#                               its planes' line; max factors against floors, none made worse
 #                               (skipped without OpenVDB).
 #   quality.designed_fillet     plate_holes by OpenVDB as Blender's voxel remesh with Preserve
 #                               Volume at 1%: its bottom outline's designed fillet, 2.4 sample

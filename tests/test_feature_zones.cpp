@@ -359,6 +359,33 @@ TEST(ProjectZoneVertices, ASliverMayStayASliver) {
       << "onto the segment from 4 to 5, less than a degree off it";
 }
 
+// Onto the restored line (a zone vertex on the edge itself, between new
+// vertices placed on it): a face whose other two corners are new vertices
+// and that is left with an angle below the degenerate one refuses nothing,
+// whichever way it faces, since the cleanup removes it; the same face
+// between input vertices still refuses a turn, and a fair face may never
+// turn over.
+TEST(ProjectZoneVertices, ASliverBetweenNewVerticesRefusesNothing) {
+  es::Mesh m;
+  es::hand_built::makeMesh(m,
+                           {Vec3(0, 0.01, 0), Vec3(-0.5, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
+                            Vec3(1, 1, 0), Vec3(0, 2, 0)},
+                           {{0, 1, 2}, {3, 4, 5}});
+  const double degenerate = 1.0 * M_PI / 180.0;
+  const std::vector<std::uint32_t> sliver{0}, fair{1};
+  const std::size_t newFrom1 = 1;  // vertices 1 to 5 are new ones
+  EXPECT_TRUE(es::detail::moveKeepsFaces(m, sliver, 0, Vec3(0, 0, 0), degenerate, newFrom1))
+      << "onto the line through 1 and 2: no area left";
+  EXPECT_TRUE(es::detail::moveKeepsFaces(m, sliver, 0, Vec3(0, -0.005, 0), degenerate, newFrom1))
+      << "just across it: a sliver facing -z";
+  EXPECT_FALSE(es::detail::moveKeepsFaces(m, sliver, 0, Vec3(0, -0.005, 0), degenerate))
+      << "1 and 2 input vertices: turned over";
+  EXPECT_FALSE(es::detail::moveKeepsFaces(m, sliver, 0, Vec3(0, -0.005, 0), degenerate, 2))
+      << "only 2 new: turned over";
+  EXPECT_FALSE(es::detail::moveKeepsFaces(m, fair, 3, Vec3(1, 2, 0), degenerate, newFrom1))
+      << "a fair face turned over";
+}
+
 // The planes tried for a zone vertex: its own first, then those of the
 // vertices listed nearby, closest first, up to the first padding entry;
 // nearby vertices without a plane are skipped.

@@ -13,9 +13,12 @@ corner see its other faces: the octahedron by OpenVDB 0.5%). At the hexagonal py
 (six faces) by OpenVDB 0.5% the patch holds edges between faces two apart, whose line runs off
 the solid past the apex, so placement refused most of their moves (mostly_refused): they join
 the apex as well, and the patch's reach is measured across the corner's faces, not along its
-acute tip. Asserted: all six inputs made, sharpened and measured, none made worse (families.is_worse), and each max error
-lowered by at least its floor, set between the factors before the change and after it
-(docs/auto-method-decisions.md has the figures).
+acute tip. Along the octahedron's edges by OpenVDB 0.5%, a remesher's vertex on the edge itself,
+which either face's plane alone would carry across the new vertices there, goes onto the line
+where the two planes meet (extended/projection.h). Asserted: all six inputs made, sharpened and
+measured, none made worse (families.is_worse), and each max error lowered by at least its floor,
+set between the factors before the change and after it (docs/auto-method-decisions.md has the
+figures).
 """
 import checks  # first: puts bench/quality on sys.path
 
@@ -25,7 +28,7 @@ MIN_MAX_FACTORS = {
     ("pyramid", "1%"): 6.0,
     ("pyramid", "0.5%"): 8.0,
     ("octahedron", "1%"): 2.8,
-    ("octahedron", "0.5%"): 2.8,
+    ("octahedron", "0.5%"): 4.3,
     ("hexagonal_pyramid", "1%"): 2.0,
     ("hexagonal_pyramid", "0.5%"): 3.0,
 }

@@ -13,6 +13,7 @@
 #include "../options.h"
 #include "../report.h"
 #include "../util/geometry.h"
+#include "../util/qef.h"
 #include "zones.h"
 
 namespace edge_sharpener {
@@ -78,22 +79,30 @@ double maxProjectionStep(const MeshType &m, const std::vector<std::uint32_t> &fa
 /// (hasCoincidentCorners: placement put two new vertices of a grid-aligned
 /// edge on one target) faces no way and refuses nothing; a face that already
 /// had such an angle (v beside two new vertices on the restored line) may
-/// keep one, thinner or not: the cleanup removes both kinds later.
+/// keep one, thinner or not: the cleanup removes both kinds later. Where
+/// the target lies on the restored edge, a face whose other two corners are
+/// new vertices (index `firstInserted` or above: placed on that line) and
+/// that is left with such an angle refuses nothing either, whichever way it
+/// faces: the cleanup removes it too. `firstInserted` 0: no such face.
 template <class MeshType>
 bool moveKeepsFaces(const MeshType &m, const std::vector<std::uint32_t> &faces, std::size_t v,
-                    const Vec3 &target, double degenerateAngleRad) {
+                    const Vec3 &target, double degenerateAngleRad, std::size_t firstInserted = 0) {
   for (const std::uint32_t fi : faces) {
     const auto &f = m.face[fi];
     Vec3 q[3], r[3];
+    int newCorners = 0;
     for (int k = 0; k < 3; ++k) {
+      const std::size_t u = vcg::tri::Index(m, f.cV(k));
       q[k] = positionOf(f.cV(k));
-      r[k] = vcg::tri::Index(m, f.cV(k)) == v ? target : q[k];
+      r[k] = u == v ? target : q[k];
+      newCorners += firstInserted > 0 && u >= firstInserted;
     }
     if (hasCoincidentCorners(q[0], q[1], q[2]) && hasCoincidentCorners(r[0], r[1], r[2])) continue;
     const Vec3 before = (q[1] - q[0]) ^ (q[2] - q[0]);
     const Vec3 after = (r[1] - r[0]) ^ (r[2] - r[0]);
     const double minBefore = minTriangleAngle(q[0], q[1], q[2]);
     const double minAfter = minTriangleAngle(r[0], r[1], r[2]);
+    if (newCorners == 2 && minAfter < degenerateAngleRad) continue;
     if (!(before * after > 0 && (minAfter >= degenerateAngleRad || minBefore < degenerateAngleRad)))
       return false;
   }
@@ -144,7 +153,10 @@ inline bool noFartherFromPlanes(const std::array<const Plane *, 4> &planes, int 
 /// farther from any of its planes (detail::noFartherFromPlanes): a voxel
 /// remesher's vertex in a convex corner's cell lies off all three faces,
 /// and once the corner is restored its own plane would fold a face, while
-/// another face's plane takes it. A vertex no plane takes stays (counted in
+/// another face's plane takes it. Last, the lines where its own plane meets
+/// each of the others (their QEF, where it has rank two): a vertex on the
+/// restored edge itself, which either plane alone would carry across the new
+/// vertices on that line. A vertex no plane or line takes stays (counted in
 /// stats.projectionsRejected;
 /// the moves the guards leave are counted at the end, from VertexMoves).
 /// Region vertices never move.
@@ -181,6 +193,15 @@ std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::siz
           !detail::moveKeepsFaces(m, faces, v, target, opt.degenerateAngleRad))
         continue;
       chosen = target;
+    }
+    for (int i = 1; i < planeCount && !chosen; ++i) {
+      const QefSolution line = solveQef({*planes[0], *planes[i]}, {}, p);
+      if (line.rank != 2 || (line.point - p).Norm() > maxStep ||
+          !detail::noFartherFromPlanes(planes, planeCount, p, line.point, tolerance) ||
+          !detail::moveKeepsFaces(m, faces, v, line.point, opt.degenerateAngleRad,
+                                  /*firstInserted=*/originalCount))
+        continue;
+      chosen = line.point;
     }
     if (!chosen) {
       ++stats.projectionsRejected;
