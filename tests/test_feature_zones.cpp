@@ -336,18 +336,26 @@ TEST(ProjectZoneVertices, AFaceWithoutAreaDoesNotRefuseAMove) {
       << "the face with area still refuses";
 }
 
+namespace {
+
+// Face 0: vertex 0 0.01 off the segment from 1 to 2 (angles near 1.1 and 0.6
+// degrees); face 1: a fair triangle on vertex 3.
+void makeSliverAndFairFace(es::Mesh &m) {
+  es::hand_built::makeMesh(m,
+                           {Vec3(0, 0.01, 0), Vec3(-0.5, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
+                            Vec3(1, 1, 0), Vec3(0, 2, 0)},
+                           {{0, 1, 2}, {3, 4, 5}});
+}
+
+}  // namespace
+
 // A face that was already a sliver (v beside two new vertices on the
 // restored line, a marching-cubes vertex half a cell off an edge) may stay one:
 // the cleanup removes it. A face with good angles may not become one, and no
 // face may turn over.
 TEST(ProjectZoneVertices, ASliverMayStayASliver) {
   es::Mesh m;
-  // Face 0: vertex 0 0.01 off the segment from 1 to 2 (angles near 1.1 and 0.6
-  // degrees); face 1: a fair triangle on vertex 3.
-  es::hand_built::makeMesh(m,
-                           {Vec3(0, 0.01, 0), Vec3(-0.5, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
-                            Vec3(1, 1, 0), Vec3(0, 2, 0)},
-                           {{0, 1, 2}, {3, 4, 5}});
+  makeSliverAndFairFace(m);
   const double degenerate = 1.0 * M_PI / 180.0;
   const std::vector<std::uint32_t> sliver{0}, fair{1};
   EXPECT_TRUE(es::detail::moveKeepsFaces(m, sliver, 0, Vec3(0, 0.005, 0), degenerate))
@@ -367,10 +375,7 @@ TEST(ProjectZoneVertices, ASliverMayStayASliver) {
 // turn over.
 TEST(ProjectZoneVertices, ASliverBetweenNewVerticesRefusesNothing) {
   es::Mesh m;
-  es::hand_built::makeMesh(m,
-                           {Vec3(0, 0.01, 0), Vec3(-0.5, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
-                            Vec3(1, 1, 0), Vec3(0, 2, 0)},
-                           {{0, 1, 2}, {3, 4, 5}});
+  makeSliverAndFairFace(m);
   const double degenerate = 1.0 * M_PI / 180.0;
   const std::vector<std::uint32_t> sliver{0}, fair{1};
   const std::size_t newFrom1 = 1;  // vertices 1 to 5 are new ones

@@ -185,23 +185,22 @@ std::size_t projectZoneVertices(MeshType &m, const FeatureZones &zones, std::siz
     const double maxStep =
         detail::maxProjectionStep(m, faces, v, p, opt.extended.maxProjectionFactor);
     const double tolerance = 1e-9 * zones.support.sampleSpacing;
+    // A target within the step bound that folds no face; beyond the vertex's
+    // own plane, also no farther from any of its other planes.
+    const auto takes = [&](const Vec3 &target, bool ownPlane, std::size_t firstInserted) {
+      return (target - p).Norm() <= maxStep &&
+             (ownPlane || detail::noFartherFromPlanes(planes, planeCount, p, target, tolerance)) &&
+             detail::moveKeepsFaces(m, faces, v, target, opt.degenerateAngleRad, firstInserted);
+    };
     std::optional<Vec3> chosen;
     for (int i = 0; i < planeCount && !chosen; ++i) {
       const Vec3 target = projectOntoPlane(*planes[i], p);
-      if ((target - p).Norm() > maxStep ||
-          (i > 0 && !detail::noFartherFromPlanes(planes, planeCount, p, target, tolerance)) ||
-          !detail::moveKeepsFaces(m, faces, v, target, opt.degenerateAngleRad))
-        continue;
-      chosen = target;
+      if (takes(target, /*ownPlane=*/i == 0, /*firstInserted=*/0)) chosen = target;
     }
     for (int i = 1; i < planeCount && !chosen; ++i) {
       const QefSolution line = solveQef({*planes[0], *planes[i]}, {}, p);
-      if (line.rank != 2 || (line.point - p).Norm() > maxStep ||
-          !detail::noFartherFromPlanes(planes, planeCount, p, line.point, tolerance) ||
-          !detail::moveKeepsFaces(m, faces, v, line.point, opt.degenerateAngleRad,
-                                  /*firstInserted=*/originalCount))
-        continue;
-      chosen = line.point;
+      if (line.rank == 2 && takes(line.point, /*ownPlane=*/false, originalCount))
+        chosen = line.point;
     }
     if (!chosen) {
       ++stats.projectionsRejected;
