@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "edge_sharpener/subdivision.h"
 #include "edge_sharpener/util/geometry.h"
 #include "edge_sharpener/util/mesh_types.h"
 
@@ -234,6 +235,22 @@ void voxelSurface(MeshType &m, const std::vector<std::array<int, 3>> &cells, int
           }
       }
   makeMesh(m, points, triangles);
+}
+
+/// A split plan of `originalVertexCount` input vertices and one inserted
+/// vertex per rest position in `rests` (each between input vertices 0 and 1),
+/// for a test that places new vertices by hand.
+inline SplitPlan planWithInserted(std::size_t originalVertexCount, const std::vector<Vec3> &rests) {
+  SplitPlan plan;
+  plan.originalVertexCount = originalVertexCount;
+  for (const Vec3 &rest : rests) {
+    InsertedVertexSource source;
+    source.original = {0, 1, 0};
+    source.originalCount = 2;
+    source.rest = rest;
+    plan.inserted.push_back(source);
+  }
+  return plan;
 }
 
 }  // namespace hand_built

@@ -9,6 +9,7 @@
 
 #include "edge_sharpener/cleanup.h"
 #include "edge_sharpener/filters.h"
+#include "edge_sharpener/guards/refused_moves.h"
 #include "hand_built_meshes.h"
 
 namespace es = edge_sharpener;
@@ -433,6 +434,58 @@ TEST(DegenerateCleanup, RevertsAVertexWhenNeitherCollapseNorFlipApplies) {
   EXPECT_EQ(t.m.vert[e].cP(), vcg::Point3f::Construct(rest));
   EXPECT_EQ(liveFaces(t.m), 6u);
   t.expectSound();
+}
+
+TEST(RefusedMoves, TakesAVertexTheCleanupSentBackPartOfTheWayOut) {
+  // The cap of RevertsAVertexWhenNeitherCollapseNorFlipApplies: e was placed
+  // right, and at rest it leaves a notch as deep as its move. It goes out
+  // again 15/16 of the way (0.036 off a-c: an angle of 4 degrees at a), where
+  // no face of it turns over or gets an angle below the bound, and its
+  // placement still counts as refused.
+  SplitTetrahedron t({0});
+  const std::size_t e = t.insertedBetween(kA, kB);
+  const Vec3 rest = t.plan.inserted[e - t.plan.originalVertexCount].rest;
+  const Vec3 placed = (t.at(kA) + t.at(kC)) / 2 + Vec3(0.005, 0, 0);
+  t.move(e, placed);
+  auto moves = t.moves();
+  std::vector<es::RefusedPlacement> refused;
+  es::removeDegenerateTriangles(t.m, moves, kDegenerateRad, false, nullptr, &refused);
+  ASSERT_EQ(refused.size(), 1u);
+  EXPECT_EQ(refused[0].vertex, e);
+  EXPECT_LT((refused[0].placed - placed).Norm(), 1e-6);
+  ASSERT_EQ(t.m.vert[e].cP(), vcg::Point3f::Construct(rest));
+
+  EXPECT_EQ(es::takeRefusedPartWay(t.m, moves, refused, kDegenerateRad, 2.0), 1u);
+  EXPECT_LT((t.at(e) - (rest + (placed - rest) * (15.0 / 16))).Norm(), 1e-6);
+  EXPECT_EQ(t.labels->placement[e], es::Placement::DegenerateRevert);
+  EXPECT_FALSE(moves.isMoved(e));
+  EXPECT_FALSE(moves.isAtRest(e));
+  t.expectSound();
+}
+
+TEST(RefusedMoves, AFaceOfTheirsThatCrossesAnotherTakesThemBackNotAPlacedVertex) {
+  // New vertex a's placement was refused (it rests at aRest, and was placed
+  // at aPlaced); new vertex b is placed (Moved), and its upright face reaches
+  // z = 0.2 only as placed. Out 15/16 of the way, a's face crosses b's: a goes
+  // back behind it, and b keeps its move.
+  const auto swapXZ = [](const Vec3 &v) { return Vec3(v[2], v[1], v[0]); };
+  const Vec3 aRest(-0.2, 0, 0.2), aPlaced(0.25, 0, 0.2), bRest(0.2, 0, 0.1), bPlaced(0.2, 0, 0.3);
+  const Vec3 p(-1, -0.5, 0.2), q(-1, 0.5, 0.2);
+  es::Mesh m;
+  es::hand_built::makeMesh(m, {p, q, swapXZ(q), swapXZ(p), aRest, bPlaced}, {{4, 0, 1}, {5, 2, 3}});
+  const es::SplitPlan plan = es::hand_built::planWithInserted(4, {aRest, bRest});
+  es::MeshLabels<es::Mesh> labels(m);
+  labels.placement[4] = es::Placement::DegenerateRevert;
+  labels.placement[5] = es::Placement::Moved;
+  es::VertexMoves<es::Mesh> moves(m, plan, labels, false);
+  const std::vector<es::RefusedPlacement> refused{{4, aPlaced}};
+
+  EXPECT_EQ(es::takeRefusedPartWay(m, moves, refused, kDegenerateRad, 2.0), 1u);
+  EXPECT_GT(m.vert[4].cP()[0], aRest[0]) << "a is out of rest";
+  EXPECT_LT(m.vert[4].cP()[0], 0.2f) << "a is behind b's upright face";
+  EXPECT_EQ(m.vert[5].cP(), vcg::Point3f::Construct(bPlaced));
+  EXPECT_EQ(labels.placement[5], es::Placement::Moved);
+  EXPECT_EQ(es::revertSelfIntersections(m, moves, kDegenerateRad, 2.0).intersectingPairs, 0u);
 }
 
 TEST(DegenerateCleanup, LeavesAMoveWhoseNeedleIsTheInputsOwnShortEdge) {

@@ -485,15 +485,7 @@ TEST(IntersectionGuard, AVertexFlaggedToRetreatFirstIsTheOneSentBack) {
     // p q r s, then the new vertices a (4) and b (5) where placement put them.
     es::hand_built::makeMesh(m, {p, q, swapXZ(q), swapXZ(p), aMoved, swapXZ(aMoved)},
                              {{4, 0, 1}, {5, 2, 3}});
-    es::SplitPlan plan;
-    plan.originalVertexCount = 4;
-    for (const Vec3 &rest : {aRest, swapXZ(aRest)}) {
-      es::InsertedVertexSource source;
-      source.original = {0, 1, 0};
-      source.originalCount = 2;
-      source.rest = rest;
-      plan.inserted.push_back(source);
-    }
+    const es::SplitPlan plan = es::hand_built::planWithInserted(4, {aRest, swapXZ(aRest)});
     es::MeshLabels<es::Mesh> labels(m);
     labels.placement[4] = labels.placement[5] = es::Placement::Moved;
     es::VertexMoves<es::Mesh> moves(m, plan, labels, false);

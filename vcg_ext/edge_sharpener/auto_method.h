@@ -17,6 +17,7 @@
 #include "guards/feature_evidence.h"
 #include "guards/intersection_guard.h"
 #include "guards/planar_folds.h"
+#include "guards/refused_moves.h"
 #include "guards/surface_measures.h"
 #include "guards/vertex_moves.h"
 #include "options.h"
@@ -146,8 +147,9 @@ class AutoMethod {
   GuardStats cleanUp(VertexMoves<MeshType> &moves, double longestInputEdge) {
     GuardStats guards;
     const std::vector<char> placedWhole = guard_->placedWholeVertices();
+    std::vector<RefusedPlacement> refused;
     guards.cleanup = removeDegenerateTriangles(m_, moves, opt_.degenerateAngleRad,
-                                               /*onlyWhereMoved=*/true, &placedWhole);
+                                               /*onlyWhereMoved=*/true, &placedWhole, &refused);
     const double spacing = spacingUnit(zones_.support);
     FoldSettings folds;
     folds.planeTolerance = VertexRules::kFoldPlaneSpacings * spacing;
@@ -159,6 +161,8 @@ class AutoMethod {
         m_, [&](std::size_t v) { return !moves.isAtRest(v); }, folds);
     guards.intersections = revertSelfIntersections(m_, moves, opt_.degenerateAngleRad,
                                                    longestInputEdge, &guard_->retreatFirst());
+    guards.cleanup.partWay =
+        takeRefusedPartWay(m_, moves, refused, opt_.degenerateAngleRad, longestInputEdge);
     return guards;
   }
 

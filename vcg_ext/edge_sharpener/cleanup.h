@@ -20,6 +20,13 @@
 
 namespace edge_sharpener {
 
+/// An inserted vertex whose placement the degenerate cleanup refused, and
+/// where it had been placed (refused_moves.h may take it part of the way out).
+struct RefusedPlacement {
+  std::uint32_t vertex = 0;
+  Vec3 placed;
+};
+
 namespace detail {
 
 inline bool isSplitChild(FaceLabel label) {
@@ -189,15 +196,18 @@ bool flipCap(typename MeshType::FaceType &f, MeshLabels<MeshType> &labels) {
   return true;
 }
 
-/// Sends the moved inserted vertices of `f` back to rest.
+/// Sends the moved inserted vertices of `f` back to rest; where each was
+/// placed goes to `refused` (optional).
 /// \return how many were sent back.
 template <class MeshType>
 std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
-                                   VertexMoves<MeshType> &moves) {
+                                   VertexMoves<MeshType> &moves,
+                                   std::vector<RefusedPlacement> *refused = nullptr) {
   std::size_t n = 0;
   for (int j = 0; j < 3; ++j) {
     const std::size_t v = vcg::tri::Index(m, f.V(j));
     if (v < moves.firstInserted() || !moves.isMoved(v)) continue;
+    if (refused) refused->push_back({std::uint32_t(v), positionOf(f.cV(j))});
     moves.sendBack(v, Placement::DegenerateRevert);
     ++n;
   }
@@ -215,12 +225,14 @@ std::size_t revertInsertedVertices(MeshType &m, typename MeshType::FaceType &f,
 /// (compact afterwards). With `onlyWhereMoved` (the auto method), a face none
 /// of whose vertices moved is left as it is: it lies on its input face, and
 /// a collapse would move the input's surface. `placedWhole` (by vertex index,
-/// optional): the auto method's corners placed whole.
+/// optional): the auto method's corners placed whole. `refused` (optional):
+/// each vertex sent back, with where it was placed (takeRefusedPartWay()).
 /// \pre placeInsertedVertices() ran; FF topology up to date.
 template <class MeshType>
 CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves, double angleRad,
                                        bool onlyWhereMoved = false,
-                                       const std::vector<char> *placedWhole = nullptr) {
+                                       const std::vector<char> *placedWhole = nullptr,
+                                       std::vector<RefusedPlacement> *refused = nullptr) {
   const SplitPlan &plan = moves.plan();
   MeshLabels<MeshType> &labels = moves.labels();
   CleanupStats s;
@@ -262,7 +274,7 @@ CleanupStats removeDegenerateTriangles(MeshType &m, VertexMoves<MeshType> &moves
         s.removedFaces += std::size_t(removed);
       } else if (detail::isInputSliverAtRest(m, f, moves, angleRad)) {
         continue;
-      } else if (std::size_t n = revertInsertedVertices(m, f, moves)) {
+      } else if (std::size_t n = revertInsertedVertices(m, f, moves, refused)) {
         s.reverted += n;
       } else {
         continue;

@@ -72,6 +72,7 @@ struct CleanupStats {
   std::size_t reverted = 0;         ///< inserted vertices moved back (counted in placement too)
   std::size_t remaining = 0;        ///< faces with a moved vertex still below the threshold
   std::size_t inherited = 0;        ///< degenerate children of input slivers (at rest too)
+  std::size_t partWay = 0;  ///< auto method: of those reverted, taken part of the way out again
 };
 
 /// Stage 6a, auto method: flat patches folded over themselves, tiled again
@@ -274,7 +275,9 @@ inline void formatPlacement(std::ostream &s, const SharpenReport &r) {
 inline void formatGuards(std::ostream &s, const SharpenReport &r) {
   s << "cleanup: " << r.cleanup.degenerateFound << " degenerate faces found, "
     << r.cleanup.collapses << " collapses, " << r.cleanup.flips << " flips, " << r.cleanup.reverted
-    << " vertices reverted, " << r.cleanup.remaining << " remaining, " << r.cleanup.inherited
+    << " vertices reverted";
+  if (r.evidenceGuard) s << " (" << r.cleanup.partWay << " taken part of the way out again)";
+  s << ", " << r.cleanup.remaining << " remaining, " << r.cleanup.inherited
     << " inherited from input slivers\n";
   if (r.evidenceGuard)
     s << "planar folds: " << r.planarFolds.folds << " folded faces found, " << r.planarFolds.patches

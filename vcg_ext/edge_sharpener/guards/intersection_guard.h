@@ -45,13 +45,15 @@ template <class MeshType>
 class IntersectionGuard {
  public:
   IntersectionGuard(MeshType &m, VertexMoves<MeshType> &moves, double degenerateAngleRad,
-                    double longestInputEdge, const std::vector<char> *retreatFirst = nullptr)
+                    double longestInputEdge, const std::vector<char> *retreatFirst = nullptr,
+                    const std::vector<char> *onlyThese = nullptr)
       : m_(m),
         moves_(moves),
         n0_(moves.firstInserted()),
         degenerateAngleRad_(degenerateAngleRad),
         stillExtent_(longestInputEdge),
-        retreatFirst_(retreatFirst) {}
+        retreatFirst_(retreatFirst),
+        onlyThese_(onlyThese) {}
 
   IntersectionStats run() {
     if (collectMovedVertices() == 0) return stats_;
@@ -94,7 +96,7 @@ class IntersectionGuard {
     std::size_t count = 0;
     for (std::size_t v = 0; v < m_.vert.size(); ++v) {
       if (m_.vert[v].IsD()) continue;
-      away_[v] = moves_.isMoved(v);
+      away_[v] = onlyThese_ ? (*onlyThese_)[v] && !moves_.isAtRest(v) : moves_.isMoved(v);
       count += away_[v];
     }
     return count;
@@ -198,7 +200,8 @@ class IntersectionGuard {
   /// Where a vertex was before sharpening moved it.
   Vec3 restPosition(const typename MeshType::VertexType *vp) const {
     const std::size_t v = vcg::tri::Index(m_, vp);
-    return moves_.hasRest(v) ? Vec3::Construct(moves_.storedRest(v)) : positionOf(vp);
+    const bool mayMove = onlyThese_ ? (*onlyThese_)[v] != 0 : moves_.hasRest(v);
+    return mayMove ? Vec3::Construct(moves_.storedRest(v)) : positionOf(vp);
   }
 
   /// How faces fi and gi meet now: a contact that is there at rest too
@@ -442,6 +445,7 @@ class IntersectionGuard {
   const double degenerateAngleRad_;
   double stillExtent_;  // bound on a still face's extent along an axis
   const std::vector<char> *retreatFirst_ = nullptr;
+  const std::vector<char> *onlyThese_ = nullptr;  // the only vertices that may move (else: moved)
   IntersectionStats stats_;
   std::vector<char> away_;                        // still away from rest, free to retreat further
   std::vector<std::uint32_t> query_;              // faces of this round
@@ -486,13 +490,17 @@ class IntersectionGuard {
 /// the faces the split did not make.
 /// `retreatFirst` (by vertex index, optional): moves on weaker evidence,
 /// sent back first where more than one vertex can part a pair as far out.
+/// `onlyThese` (by vertex index, optional): the only vertices that may
+/// retreat (those of them away from rest); every other vertex stays where it
+/// stands and counts as at rest there.
 /// \pre removeDegenerateTriangles() ran (deleted elements not yet compacted).
 template <class MeshType>
 IntersectionStats revertSelfIntersections(MeshType &m, VertexMoves<MeshType> &moves,
                                           double degenerateAngleRad, double longestInputEdge,
-                                          const std::vector<char> *retreatFirst = nullptr) {
+                                          const std::vector<char> *retreatFirst = nullptr,
+                                          const std::vector<char> *onlyThese = nullptr) {
   return detail::IntersectionGuard<MeshType>(m, moves, degenerateAngleRad, longestInputEdge,
-                                             retreatFirst)
+                                             retreatFirst, onlyThese)
       .run();
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fast_topology.h"
+#include "geometry.h"
 #include "parallel.h"
 
 namespace edge_sharpener {
@@ -128,6 +129,42 @@ void forEachRing(const MeshType &m, const VertexFaceTable &vf, std::size_t v, in
     if (!visitRing(next)) return;
     frontier.swap(next);
   }
+}
+
+/// Whether moving v to `target` keeps every face of `faces` facing the same
+/// way and creates no angle below `degenerateAngleRad` that was not there. A
+/// face with two corners at one point before the move and after it
+/// (hasCoincidentCorners: placement put two new vertices of a grid-aligned
+/// edge on one target) faces no way and refuses nothing; a face that already
+/// had such an angle (v beside two new vertices on the restored line) may
+/// keep one, thinner or not: the cleanup removes both kinds later. Where
+/// the target lies on the restored edge, a face whose other two corners are
+/// new vertices (index `firstInserted` or above: placed on that line) and
+/// that is left with such an angle refuses nothing either, whichever way it
+/// faces: the cleanup removes it too. `firstInserted` 0: no such face.
+template <class MeshType>
+bool moveKeepsFaces(const MeshType &m, const std::vector<std::uint32_t> &faces, std::size_t v,
+                    const Vec3 &target, double degenerateAngleRad, std::size_t firstInserted = 0) {
+  for (const std::uint32_t fi : faces) {
+    const auto &f = m.face[fi];
+    Vec3 q[3], r[3];
+    int newCorners = 0;
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t u = vcg::tri::Index(m, f.cV(k));
+      q[k] = positionOf(f.cV(k));
+      r[k] = u == v ? target : q[k];
+      newCorners += firstInserted > 0 && u >= firstInserted;
+    }
+    if (hasCoincidentCorners(q[0], q[1], q[2]) && hasCoincidentCorners(r[0], r[1], r[2])) continue;
+    const Vec3 before = (q[1] - q[0]) ^ (q[2] - q[0]);
+    const Vec3 after = (r[1] - r[0]) ^ (r[2] - r[0]);
+    const double minBefore = minTriangleAngle(q[0], q[1], q[2]);
+    const double minAfter = minTriangleAngle(r[0], r[1], r[2]);
+    if (newCorners == 2 && minAfter < degenerateAngleRad) continue;
+    if (!(before * after > 0 && (minAfter >= degenerateAngleRad || minBefore < degenerateAngleRad)))
+      return false;
+  }
+  return true;
 }
 
 }  // namespace detail
