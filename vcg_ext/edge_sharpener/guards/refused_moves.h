@@ -1,4 +1,4 @@
-// Stage 6c, auto method: a vertex the degenerate cleanup sent back to rest
+// Stage 6d, auto method: a vertex the degenerate cleanup sent back to rest
 // leaves a notch as deep as its move where its placement was right (its cap
 // could not be cured by a collapse or a flip). After the other guards, each
 // such vertex goes out again towards where it was placed, as far as its faces
@@ -19,18 +19,19 @@
 
 namespace edge_sharpener {
 
-/// Stage 6c: takes each vertex of `refused` still at rest (with its label
+/// Stage 6d: takes each vertex of `refused` still at rest (with its label
 /// Placement::DegenerateRevert) out towards where it was placed, to the
 /// farthest of 15, 14, ... 1 sixteenths of the way at which no face of it
 /// turns over or gets a new angle below `degenerateAngleRad`
-/// (detail::moveKeepsFaces), in vertex order; then revertSelfIntersections()
-/// with only those vertices free to move.
+/// (detail::moveKeepsFaces), in the order the cleanup sent them back; then
+/// revertSelfIntersections() with only those vertices free to move.
 /// \return how many stand away from rest afterwards.
 template <class MeshType>
 std::size_t takeRefusedPartWay(MeshType &m, VertexMoves<MeshType> &moves,
                                const std::vector<RefusedPlacement> &refused,
                                double degenerateAngleRad, double longestInputEdge) {
   constexpr int kSteps = 16;
+  if (refused.empty()) return 0;
   std::vector<char> candidate(m.vert.size(), 0);
   for (const RefusedPlacement &r : refused) {
     const std::size_t v = r.vertex;
